@@ -1,0 +1,280 @@
+// cig: command-line driver of the C model.
+//   cig render SCENE [--frame K | --frames A:B] [--channel C] [--out DIR] [--report FILE]
+//   cig raster POLYS.json [--out FILE.png] [--ids FILE] [--report FILE]
+//   cig polys SCENE --frame K --channel C --out FILE.json
+// All commands take --engine NAME [--engine-opt KEY=VALUE ...] [--snap]. Input errors print
+// "cig: error: FILE: PLACE: RULE" and exit with status 2 before any output file is written.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "common/error.hpp"
+#include "image/image.hpp"
+#include "pipeline/scene_pipeline.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace cig {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+struct EngineArgs {
+  std::string engine = "float";
+  std::vector<std::string> opts;
+  bool snap = false;
+
+  void add_to(CLI::App* app) {
+    app->add_option("--engine", engine, "raster engine (" + [] {
+      std::string s;
+      for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
+      return s;
+    }() + ")");
+    app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
+    app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
+  }
+  EngineOptions options() const {
+    EngineOptions o;
+    o.snap = snap;
+    for (const auto& kv : opts) {
+      auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw InputError("", "--engine-opt", "'" + kv + "' is not of the form KEY=VALUE");
+      o.params[kv.substr(0, eq)] = kv.substr(eq + 1);
+    }
+    make_engine(engine, o);  // validates the name and the options before any work
+    return o;
+  }
+};
+
+// "A:B" (inclusive) or "K".
+void parse_frames(const std::string& text, int& a, int& b) {
+  auto bad = [&] { throw InputError("", "--frames", "'" + text + "' is not of the form A:B (inclusive, A <= B)"); };
+  auto colon = text.find(':');
+  try {
+    std::size_t used = 0;
+    if (colon == std::string::npos) {
+      a = b = std::stoi(text, &used);
+      if (used != text.size()) bad();
+    } else {
+      a = std::stoi(text.substr(0, colon), &used);
+      if (used != colon) bad();
+      b = std::stoi(text.substr(colon + 1), &used);
+      if (used != text.size() - colon - 1) bad();
+    }
+  } catch (const std::logic_error&) {
+    bad();
+  }
+  if (a < 0 || b < a) bad();
+}
+
+std::string frame_name(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "frame_%04d", frame);
+  return buf;
+}
+
+std::string safe_name(const std::string& s) {
+  std::string r;
+  for (char c : s) r += (std::isalnum((unsigned char)c) || c == '-' || c == '_') ? c : '_';
+  return r;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"cig: computer image generator C model (float reference, bit-accurate engines)"};
+  app.require_subcommand(1);
+
+  // render
+  auto* render = app.add_subcommand("render", "render frames of a scene, one PNG per channel plus a panorama");
+  std::string scene_file, out_dir = "out", report_file, frames_text;
+  int frame_k = -1, channel = -1, threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  bool write_ids_files = false;
+  EngineArgs render_engine;
+  render->add_option("scene", scene_file, "scene file (JSON, scenes/README.md)")->required();
+  auto* fopt = render->add_option("--frame", frame_k, "frame number (default 0)");
+  render->add_option("--frames", frames_text, "inclusive frame range A:B")->excludes(fopt);
+  render->add_option("--channel", channel, "render only this channel");
+  render->add_option("--out", out_dir, "output directory (default out)");
+  render->add_option("--report", report_file, "report file (default DIR/report.json)");
+  render->add_option("--threads", threads, "worker threads over channels (default: cores)")->check(CLI::Range(1, 64));
+  render->add_flag("--ids", write_ids_files, "also write per-channel id buffers (CIGIDS1)");
+  render_engine.add_to(render);
+
+  // raster
+  auto* raster = app.add_subcommand("raster", "rasterise a screen-space polygon list (cig-polys)");
+  std::string polys_file, raster_out = "out/raster.png", ids_file, raster_report;
+  EngineArgs raster_engine;
+  raster->add_option("polys", polys_file, "polygon list (JSON, scenes/README.md)")->required();
+  raster->add_option("--out", raster_out, "output PNG (default out/raster.png)");
+  raster->add_option("--ids", ids_file, "write the per-pixel polygon index (CIGIDS1 format)");
+  raster->add_option("--report", raster_report, "write a JSON report");
+  raster_engine.add_to(raster);
+
+  // polys
+  auto* polys = app.add_subcommand("polys", "write the geometric processor's polygon list for one channel");
+  std::string polys_scene, polys_out;
+  int polys_frame = 0, polys_channel = 0;
+  polys->add_option("scene", polys_scene, "scene file")->required();
+  polys->add_option("--frame", polys_frame, "frame number")->required();
+  polys->add_option("--channel", polys_channel, "channel")->required();
+  polys->add_option("--out", polys_out, "output polygon list (JSON)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Option errors are input errors like any other: one line, status 2.
+    throw InputError("", "", e.what());
+  }
+
+  if (*render) {
+    // Everything that can be wrong with the input is checked before anything is written.
+    EngineOptions eo = render_engine.options();
+    auto t_load = Clock::now();
+    Scene scene = load_scene(scene_file);
+    const double load_ms = ms_since(t_load);
+    int a = 0, b = 0;
+    if (!frames_text.empty()) parse_frames(frames_text, a, b);
+    else if (frame_k >= 0) a = b = frame_k;
+    else if (fopt->count()) throw InputError("", "--frame", "frame must not be negative");
+    const int last = scene.frame_count() - 1;
+    if (b > last)
+      throw InputError(scene_file, "observer.keyframes",
+                       "frame " + std::to_string(b) + " lies outside the observer path (frames 0.." +
+                           std::to_string(last) + ")");
+    std::vector<int> channels;
+    if (channel >= 0) {
+      if (channel >= int(scene.channels.size()))
+        throw InputError("", "--channel", "channel " + std::to_string(channel) + " does not exist (scene has " +
+                                              std::to_string(scene.channels.size()) + ")");
+      channels.push_back(channel);
+    } else {
+      for (int c = 0; c < int(scene.channels.size()); ++c) channels.push_back(c);
+    }
+    std::filesystem::create_directories(out_dir);
+    if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
+
+    ScenePipeline pipeline(scene);
+    nlohmann::ordered_json report;
+    report["command"] = "render";
+    report["scene"] = scene_file;
+    report["engine"] = render_engine.engine;
+    report["snap"] = eo.snap;
+    report["raster"] = scene.raster;
+    report["threads"] = threads;
+    report["scene_polygons"] = scene.polygon_count();
+    report["scene_light_points"] = scene.light_point_count();
+    report["load_ms"] = load_ms;
+    report["frames"] = nlohmann::ordered_json::array();
+    const auto t_all = Clock::now();
+    for (int frame = a; frame <= b; ++frame) {
+      const auto t_frame = Clock::now();
+      std::vector<ChannelOutput> outs = pipeline.render(frame, channels, render_engine.engine, eo, threads);
+      const double render_ms = ms_since(t_frame);
+      const auto t_out = Clock::now();
+      nlohmann::ordered_json fr;
+      fr["frame"] = frame;
+      for (auto& co : outs) {
+        const std::string base = (std::filesystem::path(out_dir) / (frame_name(frame) + "_ch" +
+                                  std::to_string(co.channel) + "_" +
+                                  safe_name(scene.channels[std::size_t(co.channel)].name))).string();
+        write_png(base + ".png", co.out.image);
+        if (write_ids_files) write_ids(base + ".ids", co.out.ids);
+        co.report["image"] = base + ".png";
+      }
+      if (outs.size() > 1) {
+        // Panorama: channels left to right by yaw offset.
+        std::vector<const ChannelOutput*> order;
+        for (const auto& co : outs) order.push_back(&co);
+        std::stable_sort(order.begin(), order.end(), [&](const ChannelOutput* x, const ChannelOutput* y) {
+          return scene.channels[std::size_t(x->channel)].yaw_deg < scene.channels[std::size_t(y->channel)].yaw_deg;
+        });
+        std::vector<const Image*> parts;
+        for (const auto* co : order) parts.push_back(&co->out.image);
+        const std::string pano = (std::filesystem::path(out_dir) / (frame_name(frame) + "_panorama.png")).string();
+        write_png(pano, concatenate_horizontally(parts));
+        fr["panorama"] = pano;
+      }
+      fr["render_ms"] = render_ms;
+      fr["output_ms"] = ms_since(t_out);
+      fr["channels"] = nlohmann::ordered_json::array();
+      for (auto& co : outs) fr["channels"].push_back(std::move(co.report));
+      report["frames"].push_back(std::move(fr));
+      if (b > a)
+        std::cerr << "cig: frame " << frame << " (" << (frame - a + 1) << "/" << (b - a + 1) << ") "
+                  << channels.size() << " channel(s) in " << int(render_ms) << " ms\n";
+    }
+    report["total_ms"] = ms_since(t_all);
+    write_text_file(report_file, report.dump(2) + "\n");
+    std::cout << "cig: rendered " << (b - a + 1) << " frame(s) x " << channels.size() << " channel(s) of "
+              << scene_file << " to " << out_dir << " in " << int(ms_since(t_all)) << " ms (report "
+              << report_file << ")\n";
+    return 0;
+  }
+
+  if (*raster) {
+    EngineOptions eo = raster_engine.options();
+    ScreenFrame frame = load_polygon_list(polys_file);
+    auto eng = make_engine(raster_engine.engine, eo);
+    const auto t0 = Clock::now();
+    EngineRun run = eng->render(frame);
+    run.report["ms"] = ms_since(t0);
+    auto parent = std::filesystem::path(raster_out).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    write_png(raster_out, run.out.image);
+    if (!ids_file.empty()) write_ids(ids_file, run.out.ids);
+    if (!raster_report.empty()) {
+      nlohmann::ordered_json r;
+      r["command"] = "raster";
+      r["polys"] = polys_file;
+      r["raster"] = frame.raster;
+      r["polygons"] = frame.polygons.size();
+      r["light_points"] = frame.light_points.size();
+      r["engine_report"] = run.report;
+      write_text_file(raster_report, r.dump(2) + "\n");
+    }
+    std::cout << "cig: rasterised " << frame.polygons.size() << " polygon(s), " << frame.light_points.size()
+              << " light point(s) with engine " << raster_engine.engine << " to " << raster_out << "\n";
+    return 0;
+  }
+
+  if (*polys) {
+    Scene scene = load_scene(polys_scene);
+    if (polys_frame < 0 || polys_frame >= scene.frame_count())
+      throw InputError("", "--frame", "frame " + std::to_string(polys_frame) + " lies outside the observer path (0.." +
+                                          std::to_string(scene.frame_count() - 1) + ")");
+    if (polys_channel < 0 || polys_channel >= int(scene.channels.size()))
+      throw InputError("", "--channel", "channel " + std::to_string(polys_channel) + " does not exist");
+    ScenePipeline pipeline(scene);
+    nlohmann::ordered_json rep;
+    ScreenFrame f = pipeline.geometry(polys_frame, polys_channel, rep);
+    write_text_file(polys_out, polygon_list_json(f));
+    std::cout << "cig: wrote " << f.polygons.size() << " polygon(s), " << f.light_points.size()
+              << " light point(s) to " << polys_out << "\n";
+    return 0;
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace cig
+
+int main(int argc, char** argv) {
+  try {
+    return cig::run(argc, argv);
+  } catch (const cig::InputError& e) {
+    std::cerr << "cig: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "cig: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,201 @@
+#include "common/json_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace cig {
+
+namespace {
+
+const char* type_name(const nlohmann::json& v) {
+  if (v.is_null()) return "null";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_number()) return "a number";
+  if (v.is_string()) return "a string";
+  if (v.is_array()) return "an array";
+  return "an object";
+}
+
+std::string format_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+void JsonNode::fail(const std::string& rule) const {
+  throw InputError(*file_, path_.empty() ? "(top level)" : path_, rule);
+}
+
+void JsonNode::expect_object() const {
+  if (!value_->is_object()) fail(std::string("must be a JSON object, found ") + type_name(*value_));
+}
+
+void JsonNode::allow_only(std::initializer_list<const char*> known) const {
+  expect_object();
+  for (auto it = value_->begin(); it != value_->end(); ++it) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || it.key() == k;
+    if (!ok) {
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      JsonNode(*it, *file_, path_.empty() ? it.key() : path_ + "." + it.key())
+          .fail("unknown field '" + it.key() + "' (known fields: " + list + ")");
+    }
+  }
+}
+
+bool JsonNode::has(const char* key) const {
+  expect_object();
+  return value_->contains(key);
+}
+
+JsonNode JsonNode::at(const char* key) const {
+  expect_object();
+  auto it = value_->find(key);
+  if (it == value_->end()) fail(std::string("missing required field '") + key + "'");
+  return JsonNode(*it, *file_, path_.empty() ? key : path_ + "." + key);
+}
+
+std::optional<JsonNode> JsonNode::find(const char* key) const {
+  expect_object();
+  auto it = value_->find(key);
+  if (it == value_->end()) return std::nullopt;
+  return JsonNode(*it, *file_, path_.empty() ? key : path_ + "." + key);
+}
+
+std::size_t JsonNode::array_size() const {
+  if (!value_->is_array()) fail(std::string("must be an array, found ") + type_name(*value_));
+  return value_->size();
+}
+
+std::size_t JsonNode::array_size(std::size_t min, std::size_t max) const {
+  std::size_t n = array_size();
+  if (n < min || n > max) {
+    if (min == max) fail("must have exactly " + std::to_string(min) + " elements, has " + std::to_string(n));
+    fail("must have " + std::to_string(min) + " to " + std::to_string(max) + " elements, has " +
+         std::to_string(n));
+  }
+  return n;
+}
+
+JsonNode JsonNode::operator[](std::size_t i) const {
+  return JsonNode((*value_)[i], *file_, path_ + "[" + std::to_string(i) + "]");
+}
+
+double JsonNode::number() const {
+  if (!value_->is_number()) fail(std::string("must be a number, found ") + type_name(*value_));
+  double x = value_->get<double>();
+  if (!std::isfinite(x)) fail("must be a finite number (NaN and infinity are not allowed)");
+  return x;
+}
+
+double JsonNode::number(double lo, double hi) const {
+  double x = number();
+  if (!(x >= lo && x <= hi))
+    fail("must lie in [" + format_number(lo) + ", " + format_number(hi) + "], is " + format_number(x));
+  return x;
+}
+
+double JsonNode::positive() const {
+  double x = number();
+  if (!(x > 0)) fail("must be positive, is " + format_number(x));
+  return x;
+}
+
+long long JsonNode::integer() const {
+  if (!value_->is_number_integer())
+    fail(std::string("must be an integer, found ") +
+         (value_->is_number() ? "a fractional number" : type_name(*value_)));
+  if (value_->is_number_unsigned() && value_->get<unsigned long long>() > 1ull << 62)
+    fail("integer is too large");
+  return value_->get<long long>();
+}
+
+long long JsonNode::integer(long long lo, long long hi) const {
+  long long x = integer();
+  if (x < lo || x > hi)
+    fail("must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], is " + std::to_string(x));
+  return x;
+}
+
+bool JsonNode::boolean() const {
+  if (!value_->is_boolean()) fail(std::string("must be true or false, found ") + type_name(*value_));
+  return value_->get<bool>();
+}
+
+std::string JsonNode::string() const {
+  if (!value_->is_string()) fail(std::string("must be a string, found ") + type_name(*value_));
+  return value_->get<std::string>();
+}
+
+glm::dvec3 JsonNode::vec3() const {
+  array_size(3, 3);
+  return {(*this)[0].number(), (*this)[1].number(), (*this)[2].number()};
+}
+
+glm::dvec3 JsonNode::colour() const {
+  array_size(3, 3);
+  return {(*this)[0].number(0, 1), (*this)[1].number(0, 1), (*this)[2].number(0, 1)};
+}
+
+double JsonNode::number_or(const char* key, double fallback) const {
+  auto n = find(key);
+  return n ? n->number() : fallback;
+}
+
+bool JsonNode::boolean_or(const char* key, bool fallback) const {
+  auto n = find(key);
+  return n ? n->boolean() : fallback;
+}
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // nlohmann reports "parse error at line L, column C: <what>"; keep its position, reword the rest.
+    std::string what = e.what();
+    std::string where = "byte " + std::to_string(e.byte);
+    auto at = what.find(" at line ");
+    auto colon = what.find(": ", at == std::string::npos ? 0 : at);
+    if (at != std::string::npos && colon != std::string::npos) {
+      where = what.substr(at + 4, colon - at - 4);
+      what = what.substr(colon + 2);
+    } else if (auto p = what.find("parse error"); p != std::string::npos) {
+      what = what.substr(p);
+    }
+    throw InputError(file, where, "malformed JSON (" + what + ")");
+  } catch (const nlohmann::json::out_of_range& e) {
+    // Number overflow (e.g. 1e999): nlohmann names the token but not its place; find it.
+    std::string what = e.what();
+    std::string token;
+    auto q0 = what.find('\''), q1 = what.rfind('\'');
+    if (q0 != std::string::npos && q1 > q0) token = what.substr(q0 + 1, q1 - q0 - 1);
+    std::string where;
+    if (auto p = token.empty() ? std::string::npos : text.find(token); p != std::string::npos) {
+      std::size_t line = 1, col = 1;
+      for (std::size_t i = 0; i < p; ++i) {
+        if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+      }
+      where = "line " + std::to_string(line) + ", column " + std::to_string(col);
+    }
+    throw InputError(file, where, "number '" + token + "' is not a finite number (overflow)");
+  }
+}
+
+std::string read_text_file(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, "", "cannot open file (missing or unreadable)");
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) throw InputError(file, "", "error while reading file");
+  return s.str();
+}
+
+nlohmann::json read_json_file(const std::string& file) {
+  return parse_json_text(read_text_file(file), file);
+}
+
+}  // namespace cig

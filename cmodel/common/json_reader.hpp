@@ -1,0 +1,71 @@
+// Strict, path-tracking access to a parsed JSON document. Every accessor checks type, range and
+// finiteness, and every failure throws InputError naming the file, the JSON path
+// (e.g. "objects[2].subobjects[0].polygons[7].indices") and the rule that was broken.
+#pragma once
+
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include "common/error.hpp"
+
+namespace cig {
+
+class JsonNode {
+ public:
+  JsonNode(const nlohmann::json& value, const std::string& file, std::string path)
+      : value_(&value), file_(&file), path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& rule) const;
+  const std::string& path() const { return path_; }
+  const std::string& file() const { return *file_; }
+  const nlohmann::json& raw() const { return *value_; }
+
+  // Objects.
+  void expect_object() const;
+  // Rejects any key not in `known` (catches typos such as "colur").
+  void allow_only(std::initializer_list<const char*> known) const;
+  bool has(const char* key) const;
+  JsonNode at(const char* key) const;                   // required member
+  std::optional<JsonNode> find(const char* key) const;  // optional member
+
+  // Arrays.
+  std::size_t array_size() const;  // fails unless an array
+  std::size_t array_size(std::size_t min, std::size_t max) const;
+  JsonNode operator[](std::size_t i) const;
+
+  // Scalars.
+  double number() const;  // finite
+  double number(double lo, double hi) const;   // finite, lo <= x <= hi
+  double positive() const;                     // finite, > 0
+  long long integer() const;
+  long long integer(long long lo, long long hi) const;
+  bool boolean() const;
+  std::string string() const;
+
+  // Fixed-length numeric arrays.
+  glm::dvec3 vec3() const;
+  glm::dvec3 colour() const;  // three numbers in [0, 1]
+
+  // Convenience for optional members with defaults.
+  double number_or(const char* key, double fallback) const;
+  bool boolean_or(const char* key, bool fallback) const;
+
+ private:
+  const nlohmann::json* value_;
+  const std::string* file_;
+  std::string path_;
+};
+
+// Parses `text` (the contents of `file`); malformed JSON throws InputError with line and column.
+nlohmann::json parse_json_text(const std::string& text, const std::string& file);
+// Reads and parses a file; a missing or unreadable file throws InputError.
+nlohmann::json read_json_file(const std::string& file);
+// Reads a whole file as text; throws InputError naming `file` when it cannot be read.
+std::string read_text_file(const std::string& file);
+
+}  // namespace cig

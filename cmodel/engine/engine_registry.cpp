@@ -1,0 +1,55 @@
+#include <chrono>
+
+#include "common/error.hpp"
+#include "engine/engine.hpp"
+
+namespace cig {
+
+namespace {
+
+class FloatEngine : public RasterEngine {
+ public:
+  explicit FloatEngine(const EngineOptions& o) : options_(o) {}
+  const char* name() const override { return "float"; }
+  EngineRun render(const ScreenFrame& frame) override {
+    ReferenceStats st;
+    EngineRun run;
+    if (options_.snap) run.out = render_reference(snap_to_formatter_grid(frame), st);
+    else run.out = render_reference(frame, st);
+    run.report["engine"] = "float";
+    run.report["snapped"] = options_.snap;
+    run.report["polygons"] = st.polygons;
+    run.report["polygons_empty"] = st.polygons_empty;
+    run.report["samples_covered"] = st.samples_covered;
+    run.report["samples_written"] = st.samples_written;
+    run.report["light_points"] = st.light_points;
+    run.report["light_samples"] = st.light_samples;
+    run.report["raster_ms"] = st.raster_ms;
+    run.report["resolve_ms"] = st.resolve_ms;
+    return run;
+  }
+
+ private:
+  EngineOptions options_;
+};
+
+}  // namespace
+
+std::vector<std::string> engine_names() { return {"float"}; }
+
+std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
+  auto reject_params = [&](const char* engine) {
+    if (!options.params.empty())
+      throw InputError("", "--engine-opt", "engine '" + std::string(engine) + "' takes no option '" +
+                                               options.params.begin()->first + "'");
+  };
+  if (name == "float") {
+    reject_params("float");
+    return std::make_unique<FloatEngine>(options);
+  }
+  std::string known;
+  for (const auto& n : engine_names()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError("", "--engine", "unknown engine '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace cig

@@ -1,0 +1,159 @@
+#include "frame/screen_frame.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "common/json_reader.hpp"
+#include "scene/polygon_checks.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace cig {
+
+double snap_grid_coordinate(double s) {
+  double g = std::round(grid_x(s));
+  g = std::min(std::max(g, 0.0), double(kGridMax));
+  return (g - kGridOffset) / kGridScale;
+}
+
+ScreenFrame snap_to_formatter_grid(const ScreenFrame& f) {
+  ScreenFrame s = f;
+  for (auto& p : s.polygons)
+    for (auto& v : p.vertices) {
+      v.xs = snap_grid_coordinate(v.xs);
+      v.ys = snap_grid_coordinate(v.ys);
+    }
+  for (auto& l : s.light_points) {
+    l.xs = snap_grid_coordinate(l.xs);
+    l.ys = snap_grid_coordinate(l.ys);
+    double d = std::min(std::round(kGridScale * l.ds), kMaxLightDiameterUnits);
+    l.ds = d / kGridScale;
+  }
+  return s;
+}
+
+ScreenFrame parse_polygon_list(const std::string& text, const std::string& file) {
+  nlohmann::json doc = parse_json_text(text, file);
+  JsonNode root(doc, file, "");
+  if (root.at("format").string() != "cig-polys")
+    root.at("format").fail("must be \"cig-polys\" (a scene uses \"cig-scene\")");
+  root.allow_only({"format", "version", "raster", "frame", "channel", "fog", "background", "polygons",
+                   "light_points"});
+  if (root.at("version").integer() != 1) root.at("version").fail("only version 1 is supported");
+  ScreenFrame f;
+  if (auto r = root.find("raster")) {
+    long long n = r->integer();
+    if (!valid_raster_size(n))
+      r->fail("raster size " + std::to_string(n) + " is not a power of two in [" +
+              std::to_string(kMinRaster) + ", " + std::to_string(kMaxRaster) + "]");
+    f.raster = int(n);
+  }
+  f.frame = root.find("frame") ? int(root.at("frame").integer(0, 10'000'000)) : 0;
+  f.channel = root.find("channel") ? int(root.at("channel").integer(0, 7)) : 0;
+  if (auto fg = root.find("fog")) {
+    fg->allow_only({"colour", "start", "end"});
+    f.fog.colour = fg->at("colour").colour();
+    f.fog.start = fg->at("start").number();
+    f.fog.end = fg->at("end").number();
+    if (f.fog.start < 0) fg->at("start").fail("fog start must not be negative");
+    if (!(f.fog.end > f.fog.start)) fg->at("end").fail("fog end must be greater than fog start");
+    f.background = f.fog.colour;
+  }
+  if (auto b = root.find("background")) f.background = b->colour();
+
+  JsonNode polys = root.at("polygons");
+  std::size_t np = polys.array_size();
+  for (std::size_t i = 0; i < np; ++i) {
+    JsonNode p = polys[i];
+    p.allow_only({"colour", "opaque", "protected", "vertices"});
+    ScreenPolygon sp;
+    if (auto c = p.find("colour")) sp.colour = c->colour();
+    sp.opaque = p.boolean_or("opaque", true);
+    sp.protect = p.boolean_or("protected", false);
+    JsonNode vs = p.at("vertices");
+    std::size_t nv = vs.array_size();
+    if (nv < 3) vs.fail("polygon has " + std::to_string(nv) + " vertices; at least 3 are required");
+    if (nv > std::size_t(kMaxScreenVertices))
+      vs.fail("polygon has " + std::to_string(nv) + " vertices; at most " +
+              std::to_string(kMaxScreenVertices) + " are accepted");
+    std::vector<glm::dvec2> xy;
+    for (std::size_t k = 0; k < nv; ++k) {
+      JsonNode v = vs[k];
+      v.array_size(4, 4);
+      ScreenVertex sv;
+      sv.xs = v[0].number(-1, 1);
+      sv.ys = v[1].number(-1, 1);
+      sv.zs = v[2].positive();
+      sv.is = v[3].number(0, 1);
+      sp.vertices.push_back(sv);
+      xy.emplace_back(sv.xs, sv.ys);
+    }
+    std::string rule = check_convex_2d(xy);
+    if (!rule.empty()) p.fail(rule);
+    f.polygons.push_back(std::move(sp));
+  }
+  if (auto lps = root.find("light_points")) {
+    std::size_t nl = lps->array_size();
+    for (std::size_t i = 0; i < nl; ++i) {
+      JsonNode l = (*lps)[i];
+      l.allow_only({"centre", "diameter", "colour", "intensity"});
+      ScreenLightPoint lp;
+      JsonNode c = l.at("centre");
+      c.array_size(3, 3);
+      lp.xs = c[0].number(-1, 1);
+      lp.ys = c[1].number(-1, 1);
+      lp.zs = c[2].positive();
+      lp.ds = l.at("diameter").number(0, 1);
+      if (auto col = l.find("colour")) lp.colour = col->colour();
+      lp.intensity = l.find("intensity") ? l.at("intensity").number(0, 1) : 1.0;
+      f.light_points.push_back(lp);
+    }
+  }
+  return f;
+}
+
+ScreenFrame load_polygon_list(const std::string& file) {
+  return parse_polygon_list(read_text_file(file), file);
+}
+
+std::string polygon_list_json(const ScreenFrame& f) {
+  // Written by hand rather than through nlohmann::json so that doubles keep all 17 digits and the
+  // file round-trips bit for bit.
+  std::ostringstream s;
+  s << std::setprecision(17);
+  auto rgb = [&](const Rgb& c) { s << "[" << c.r << ", " << c.g << ", " << c.b << "]"; };
+  s << "{\n  \"format\": \"cig-polys\",\n  \"version\": 1,\n  \"raster\": " << f.raster
+    << ",\n  \"frame\": " << f.frame << ",\n  \"channel\": " << f.channel << ",\n";
+  if (f.fog.end < 1e29) {
+    s << "  \"fog\": {\"colour\": ";
+    rgb(f.fog.colour);
+    s << ", \"start\": " << f.fog.start << ", \"end\": " << f.fog.end << "},\n";
+  }
+  s << "  \"background\": ";
+  rgb(f.background);
+  s << ",\n  \"polygons\": [";
+  for (std::size_t i = 0; i < f.polygons.size(); ++i) {
+    const auto& p = f.polygons[i];
+    s << (i ? ",\n" : "\n") << "    {\"colour\": ";
+    rgb(p.colour);
+    s << ", \"opaque\": " << (p.opaque ? "true" : "false") << ", \"protected\": "
+      << (p.protect ? "true" : "false") << ", \"vertices\": [";
+    for (std::size_t k = 0; k < p.vertices.size(); ++k) {
+      const auto& v = p.vertices[k];
+      s << (k ? ", " : "") << "[" << v.xs << ", " << v.ys << ", " << v.zs << ", " << v.is << "]";
+    }
+    s << "]}";
+  }
+  s << "\n  ],\n  \"light_points\": [";
+  for (std::size_t i = 0; i < f.light_points.size(); ++i) {
+    const auto& l = f.light_points[i];
+    s << (i ? ",\n" : "\n") << "    {\"centre\": [" << l.xs << ", " << l.ys << ", " << l.zs
+      << "], \"diameter\": " << l.ds << ", \"colour\": ";
+    rgb(l.colour);
+    s << ", \"intensity\": " << l.intensity << "}";
+  }
+  s << "\n  ]\n}\n";
+  return s.str();
+}
+
+}  // namespace cig

@@ -1,0 +1,68 @@
+// The screen-space polygon list: the interface between the geometric processor (stage B) and
+// every raster engine (formatter + segment processor, quadtree raster processor, float
+// reference). One ScreenFrame is one channel of one frame. Format on disk: "cig-polys",
+// documented in scenes/README.md.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace cig {
+
+// Screen coordinates as produced by the geometric processor (SPEC B):
+//   Xs in [-1, 1] left to right, Ys in [-1, 1] top to bottom (raster line order),
+//   Zs > 0 eye depth in metres, Is in [0, 1] Gouraud intensity.
+struct ScreenVertex {
+  double xs = 0, ys = 0, zs = 1, is = 1;
+};
+
+struct ScreenPolygon {
+  std::vector<ScreenVertex> vertices;  // convex, at most kMaxScreenVertices, either winding
+  Rgb colour{1, 1, 1};
+  bool opaque = true;
+  bool protect = false;
+  // Where it came from (object, subobject, polygon index), -1 when read from a polygon list.
+  std::int32_t object = -1, subobject = -1, polygon = -1;
+};
+
+struct ScreenLightPoint {
+  double xs = 0, ys = 0, zs = 1;
+  double ds = 0;  // diameter in the units of Xs (2 = the screen width)
+  Rgb colour{1, 1, 1};
+  double intensity = 1;
+};
+
+// Polygons are in priority order: index 0 has the highest priority (nearest). Engines that
+// resolve visibility by priority use this order; the float reference uses depth and falls back to
+// the order only for exactly equal depths.
+struct ScreenFrame {
+  int raster = 512;
+  int frame = 0, channel = 0;
+  Fog fog;
+  Rgb background{0, 0, 0};
+  std::vector<ScreenPolygon> polygons;
+  std::vector<ScreenLightPoint> light_points;
+};
+
+// Formatter grid (SPEC C, eq. 1): X = 2048*Xs + 2047, Y = 2048*Ys + 2047, 4096 units per screen.
+constexpr double kGridScale = 2048.0;
+constexpr double kGridOffset = 2047.0;
+constexpr int kGridMax = 4095;
+inline double grid_x(double xs) { return kGridScale * xs + kGridOffset; }
+// Light-point diameter in grid units, D = 2048*Ds clamped to 0..7 (eq. 1).
+constexpr double kMaxLightDiameterUnits = 7.0;
+
+// Snaps positions to the formatter grid (round half away from zero, clamp 0..4095) and light
+// diameters to whole units 0..7, leaving everything else as it is: the float reference on a
+// snapped frame sees exactly the positions a fixed-point engine sees.
+ScreenFrame snap_to_formatter_grid(const ScreenFrame& f);
+double snap_grid_coordinate(double s);  // Xs or Ys -> snapped Xs or Ys
+
+ScreenFrame load_polygon_list(const std::string& file);
+ScreenFrame parse_polygon_list(const std::string& text, const std::string& file);
+std::string polygon_list_json(const ScreenFrame& f);  // "cig-polys" text
+
+}  // namespace cig

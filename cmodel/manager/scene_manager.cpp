@@ -1,0 +1,49 @@
+#include "manager/scene_manager.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace cig {
+
+bool sphere_may_be_visible(const ViewPyramid& pyramid, const glm::dvec3& c, double r) {
+  for (const ClipPlane& p : pyramid.plane)
+    if (p.distance(c) < -r * std::sqrt(p.a * p.a + p.b * p.b + p.c * p.c)) return false;
+  return true;
+}
+
+PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, SceneManagerStats& stats) {
+  struct Visible {
+    double distance;
+    std::uint32_t object;
+  };
+  std::vector<Visible> visible;
+  const ViewPyramid pyramid(view.tan_half_fov, view.near);
+  stats.objects += db.objects.size();
+  for (std::uint32_t i = 0; i < db.objects.size(); ++i) {
+    const WorldObject& o = db.objects[i];
+    glm::dvec3 c = view.to_eye(o.centre);
+    if (sphere_may_be_visible(pyramid, c, o.radius)) visible.push_back({glm::length(c), i});
+  }
+  stats.objects_visible += visible.size();
+  // Depth sort by distance to the centre (SPEC A.3); stable so equal distances keep database order.
+  std::stable_sort(visible.begin(), visible.end(),
+                   [](const Visible& a, const Visible& b) { return a.distance < b.distance; });
+  PriorityList list;
+  for (const auto& vis : visible) {
+    const WorldObject& o = db.objects[vis.object];
+    for (std::uint32_t s = 0; s < o.subobjects.size(); ++s) {
+      ++stats.subobjects_tested;
+      const WorldSubobject& sub = o.subobjects[s];
+      if (sphere_may_be_visible(pyramid, view.to_eye(sub.centre), sub.radius)) {
+        list.subobjects.push_back({vis.object, s});
+        ++stats.subobjects_visible;
+      }
+    }
+    if (!o.light_positions.empty()) list.light_objects.push_back(vis.object);
+  }
+  return list;
+}
+
+}  // namespace cig

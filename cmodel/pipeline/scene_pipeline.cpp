@@ -1,0 +1,73 @@
+#include "pipeline/scene_pipeline.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "geometry/geometric_processor.hpp"
+#include "manager/scene_manager.hpp"
+
+namespace cig {
+
+ScenePipeline::ScenePipeline(const Scene& scene) : scene_(scene), db_(build_world_database(scene)) {}
+
+ScreenFrame ScenePipeline::geometry(int frame, int channel, nlohmann::ordered_json& report) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ChannelView view = make_channel_view(scene_, frame, channel);
+  SceneManagerStats ms;
+  PriorityList list = manage_channel(db_, view, ms);
+  ms.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  GeometryStats gs;
+  ScreenFrame f = process_channel(scene_, db_, view, list, gs);
+  report["scene_manager"] = {{"objects", ms.objects},
+                             {"objects_visible", ms.objects_visible},
+                             {"subobjects_tested", ms.subobjects_tested},
+                             {"subobjects_visible", ms.subobjects_visible},
+                             {"ms", ms.ms}};
+  report["geometry"] = {{"polygons_in", gs.polygons_in},       {"backfacing", gs.backfacing},
+                        {"outside", gs.outside},               {"clipped", gs.clipped},
+                        {"degenerate", gs.degenerate},         {"polygons_out", gs.polygons_out},
+                        {"vertices_out", gs.vertices_out},     {"light_points_in", gs.light_points_in},
+                        {"light_points_out", gs.light_points_out}, {"ms", gs.ms}};
+  return f;
+}
+
+std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<int>& channels,
+                                                 const std::string& engine, const EngineOptions& options,
+                                                 int threads) const {
+  std::vector<ChannelOutput> out(channels.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&] {
+    try {
+      auto eng = make_engine(engine, options);
+      for (std::size_t k; (k = next++) < channels.size();) {
+        ChannelOutput& co = out[k];
+        co.channel = channels[k];
+        co.report["channel"] = co.channel;
+        co.report["name"] = scene_.channels[std::size_t(co.channel)].name;
+        ScreenFrame f = geometry(frame, co.channel, co.report);
+        const auto t0 = std::chrono::steady_clock::now();
+        EngineRun run = eng->render(f);
+        run.report["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        co.out = std::move(run.out);
+        co.report["raster"] = std::move(run.report);
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+  };
+  const int n = std::max(1, std::min<int>(threads, int(channels.size())));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < n; ++i) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  return out;
+}
+
+}  // namespace cig

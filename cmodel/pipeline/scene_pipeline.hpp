@@ -1,0 +1,41 @@
+// The per-frame data flow of the C model: scene manager (A) -> geometric processor (B) -> a raster
+// engine (C-E or the float reference), for every requested channel, with a report of what each
+// stage did and took.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/engine.hpp"
+#include "scene/world_database.hpp"
+
+namespace cig {
+
+struct ChannelOutput {
+  int channel = 0;
+  RasterImage out;
+  nlohmann::ordered_json report;
+};
+
+class ScenePipeline {
+ public:
+  explicit ScenePipeline(const Scene& scene);
+  const Scene& scene() const { return scene_; }
+
+  // Stages A and B for one channel: the polygon list a raster engine receives.
+  ScreenFrame geometry(int frame, int channel, nlohmann::ordered_json& report) const;
+
+  // A, B and the engine for the given channels of one frame; channels run on up to `threads`
+  // worker threads, each with its own engine instance.
+  std::vector<ChannelOutput> render(int frame, const std::vector<int>& channels,
+                                    const std::string& engine, const EngineOptions& options,
+                                    int threads) const;
+
+ private:
+  const Scene& scene_;
+  WorldDatabase db_;
+};
+
+}  // namespace cig

@@ -1,0 +1,157 @@
+// Exact, watertight sample coverage of a convex polygon (the float reference's rule, which the
+// fixed-point engines reproduce on snapped vertices).
+//
+// Edge function. For an edge with endpoints ordered canonically (a before b by (y, x)), the
+// function C(q) = (b.x - a.x)*(q.y - a.y) - (b.y - a.y)*(q.x - a.x) is evaluated with the same
+// operands in both polygons that share the edge, so the two get bit-identical values of opposite
+// meaning: no sample falls between them or into both, whatever the rounding.
+//
+// Tie rule (sample exactly on an edge, E = 0): the sample belongs to the polygon into which the
+// edge's inward gradient points along +x, or, for horizontal edges, along +y (downward). This is
+// symbolic perturbation of the sample to (x + e, y + e^2) with e -> 0+, so at shared vertices too
+// exactly one polygon of a tiling owns the sample. In raster terms: left and top edges are
+// inclusive, right and bottom edges exclusive (the top-left rule, y pointing down).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "reference/sample_lattice.hpp"
+
+namespace cig {
+
+struct EdgeEquation {
+  double ax, ay;   // canonical start point a
+  double dx, dy;   // b - a
+  double sign;     // +1 or -1: interior is sign*C > 0
+  bool owns_ties;  // the polygon owns samples with C == 0 on this edge
+};
+
+struct CoverageSetup {
+  int n = 0;
+  double x[kMaxScreenVertices], y[kMaxScreenVertices];  // sample coordinates
+  EdgeEquation edge[kMaxScreenVertices];
+  double ymin = 0, ymax = 0;
+  bool empty = true;  // zero area: covers nothing
+
+  // True when sample (i, j) is covered (E > 0 on every edge, or E == 0 on an owned edge).
+  bool covers(double qx, double qy) const {
+    for (int k = 0; k < n; ++k) {
+      const EdgeEquation& e = edge[k];
+      const double c = e.sign * (e.dx * (qy - e.ay) - e.dy * (qx - e.ax));
+      if (c < 0 || (c == 0 && !e.owns_ties)) return false;
+    }
+    return true;
+  }
+
+  // Left and right ends of the polygon's intersection with row y (ymin <= y <= ymax), with the
+  // index of the edge that produced each end (for attribute interpolation). Rounded; used only to
+  // bound the exact per-sample tests.
+  void row_span(double yr, double& xl, double& xr, int& el, int& er) const {
+    xl = 1e300;
+    xr = -1e300;
+    el = er = 0;
+    for (int k = 0; k < n; ++k) {
+      const int k1 = (k + 1) % n;
+      const double y0 = y[k], y1 = y[k1];
+      if (yr < std::min(y0, y1) || yr > std::max(y0, y1)) continue;
+      double xa, xb;
+      if (y0 == y1) {
+        xa = std::min(x[k], x[k1]);
+        xb = std::max(x[k], x[k1]);
+      } else {
+        xa = xb = x[k] + (yr - y0) * (x[k1] - x[k]) / (y1 - y0);
+      }
+      if (xa < xl) { xl = xa; el = k; }
+      if (xb > xr) { xr = xb; er = k; }
+    }
+  }
+};
+
+// Builds the edge equations from vertices in sample coordinates. Zero-area polygons are empty.
+inline CoverageSetup setup_coverage(const double* xs, const double* ys, int n) {
+  CoverageSetup s;
+  s.n = n;
+  double area2 = 0;
+  for (int k = 0; k < n; ++k) {
+    s.x[k] = xs[k];
+    s.y[k] = ys[k];
+    const int k1 = (k + 1) % n;
+    area2 += xs[k] * ys[k1] - xs[k1] * ys[k];
+  }
+  s.empty = !(area2 != 0) || n < 3;
+  if (s.empty) return s;
+  const double orientation = area2 > 0 ? 1.0 : -1.0;
+  s.ymin = s.ymax = ys[0];
+  for (int k = 0; k < n; ++k) {
+    s.ymin = std::min(s.ymin, ys[k]);
+    s.ymax = std::max(s.ymax, ys[k]);
+    const int k1 = (k + 1) % n;
+    // Canonical order: a before b when (a.y, a.x) < (b.y, b.x).
+    const bool forward = ys[k] < ys[k1] || (ys[k] == ys[k1] && xs[k] < xs[k1]);
+    const int a = forward ? k : k1, b = forward ? k1 : k;
+    EdgeEquation& e = s.edge[k];
+    e.ax = xs[a];
+    e.ay = ys[a];
+    e.dx = xs[b] - xs[a];
+    e.dy = ys[b] - ys[a];
+    // cross(p_{k+1} - p_k, q - p_k) is positive inside a polygon of positive signed area (in
+    // these coordinates); with the canonical operands it equals +-C(q).
+    e.sign = orientation * (forward ? 1.0 : -1.0);
+    // Gradient of sign*C with respect to q is sign*(-dy, dx).
+    const double gx = -e.sign * e.dy, gy = e.sign * e.dx;
+    e.owns_ties = gx > 0 || (gx == 0 && gy > 0);
+  }
+  return s;
+}
+
+// Row boundary of a polygon at one sample row, rounded: for attribute interpolation only.
+struct RowSpan {
+  double xl, xr;
+  int el, er;  // edges that produced the left and right ends
+};
+
+// Visits every covered sample of an m x m lattice row by row: row(j, span) once per row that has
+// candidates, then sample(i, j) for each covered sample of that row.
+// Only rows row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
+template <class RowFn, class SampleFn>
+void for_each_covered_sample(const CoverageSetup& s, int m, int row_lo, int row_hi, RowFn&& row,
+                             SampleFn&& sample) {
+  if (s.empty) return;
+  const int j0 = int(std::max(double(row_lo), std::ceil(s.ymin)));
+  const int j1 = int(std::min(double(row_hi), std::floor(s.ymax)));
+  for (int j = j0; j <= j1; ++j) {
+    RowSpan span;
+    s.row_span(double(j), span.xl, span.xr, span.el, span.er);
+    if (!(span.xl <= span.xr)) continue;
+    // The rounded span is within far less than a sample of the exact one, so floor/ceil bound
+    // every sample the exact test can accept.
+    const int i0 = int(std::max(0.0, std::floor(span.xl)));
+    const int i1 = int(std::min(double(m - 1), std::ceil(span.xr)));
+    row(j, span);
+    for (int i = i0; i <= i1; ++i)
+      if (s.covers(double(i), double(j))) sample(i, j);
+  }
+}
+
+template <class SampleFn>
+void for_each_covered_sample(const CoverageSetup& s, int m, SampleFn&& sample) {
+  for_each_covered_sample(s, m, 0, m - 1, [](int, const RowSpan&) {}, sample);
+}
+
+// Coverage setup of a screen polygon on a lattice.
+inline CoverageSetup setup_coverage(const ScreenPolygon& p, const SampleLattice& lattice) {
+  double x[kMaxScreenVertices], y[kMaxScreenVertices];
+  const int n = int(std::min<std::size_t>(p.vertices.size(), kMaxScreenVertices));
+  for (int k = 0; k < n; ++k) {
+    x[k] = lattice.from_screen(p.vertices[std::size_t(k)].xs);
+    y[k] = lattice.from_screen(p.vertices[std::size_t(k)].ys);
+  }
+  return setup_coverage(x, y, n);
+}
+
+// Non-opaque polygons are screen-door transparent: they cover only the samples of a fixed
+// checkerboard (half of each pixel's samples), so visibility stays order-independent.
+inline bool screen_door_passes(bool opaque, int i, int j) { return opaque || ((i + j) & 1) == 0; }
+
+}  // namespace cig

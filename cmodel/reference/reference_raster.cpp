@@ -1,0 +1,263 @@
+#include "reference/reference_raster.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "reference/coverage.hpp"
+
+namespace cig {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// w = 1/Z as an affine function of sample coordinates, fitted through the vertex triple of
+// largest area (exact for a planar polygon; well conditioned).
+struct DepthPlane {
+  double x0, y0, w0, a, b;
+  double at(double x, double y) const { return w0 + a * (x - x0) + b * (y - y0); }
+};
+
+DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
+  const int n = c.n;
+  int i1 = 1;
+  double best = -1;
+  for (int k = 1; k < n; ++k) {
+    double d = (c.x[k] - c.x[0]) * (c.x[k] - c.x[0]) + (c.y[k] - c.y[0]) * (c.y[k] - c.y[0]);
+    if (d > best) { best = d; i1 = k; }
+  }
+  int i2 = i1 == 1 ? 2 : 1;
+  best = -1;
+  for (int k = 1; k < n; ++k) {
+    if (k == i1) continue;
+    double a = std::abs((c.x[i1] - c.x[0]) * (c.y[k] - c.y[0]) - (c.y[i1] - c.y[0]) * (c.x[k] - c.x[0]));
+    if (a > best) { best = a; i2 = k; }
+  }
+  auto w = [&](int k) { return 1.0 / p.vertices[std::size_t(k)].zs; };
+  const double ux = c.x[i1] - c.x[0], uy = c.y[i1] - c.y[0];
+  const double vx = c.x[i2] - c.x[0], vy = c.y[i2] - c.y[0];
+  const double du = w(i1) - w(0), dv = w(i2) - w(0);
+  const double det = ux * vy - uy * vx;
+  DepthPlane d{c.x[0], c.y[0], w(0), 0, 0};
+  if (det != 0) {
+    d.a = (du * vy - dv * uy) / det;
+    d.b = (dv * ux - du * vx) / det;
+  }
+  return d;
+}
+
+// Intensity at the end of a row span on edge k (eq. 3: linear in Y along the edge; a horizontal
+// edge contributes its nearer endpoint).
+double edge_intensity(const CoverageSetup& c, const ScreenPolygon& p, int k, double y, double x) {
+  const int k1 = (k + 1) % c.n;
+  const double i0 = p.vertices[std::size_t(k)].is, i1 = p.vertices[std::size_t(k1)].is;
+  if (c.y[k] == c.y[k1]) return std::abs(x - c.x[k]) <= std::abs(x - c.x[k1]) ? i0 : i1;
+  const double t = (y - c.y[k]) / (c.y[k1] - c.y[k]);
+  return i0 + t * (i1 - i0);
+}
+
+double fog_factor(const Fog& fog, double z) {
+  return std::clamp((z - fog.start) / (fog.end - fog.start), 0.0, 1.0);
+}
+
+}  // namespace
+
+namespace {
+
+// The raster is processed in horizontal strips of kStripPixels pixel rows: polygons and light
+// points are binned by the strips they touch, and each strip's sample buffers (a few MB) are
+// reused, so the work stays in cache and no full-screen sample buffer is ever allocated.
+constexpr int kStripPixels = 16;
+
+// Bins items by the strips their sample-row range [lo, hi] touches (counting sort: flat arrays).
+struct StripBins {
+  std::vector<std::uint32_t> first, items;
+  template <class RangeFn>
+  void build(std::size_t count, int strips, int strip_rows, RangeFn&& range) {
+    first.assign(std::size_t(strips) + 1, 0);
+    auto strip_range = [&](std::size_t k, int& s0, int& s1) {
+      double lo, hi;
+      range(k, lo, hi);
+      s0 = int(std::clamp(std::floor(lo / strip_rows), 0.0, double(strips - 1)));
+      s1 = int(std::clamp(std::floor(hi / strip_rows), 0.0, double(strips - 1)));
+      if (hi < 0 || lo > double(strips) * strip_rows) s1 = s0 - 1;  // off screen
+    };
+    for (std::size_t k = 0; k < count; ++k) {
+      int s0, s1;
+      strip_range(k, s0, s1);
+      for (int st = s0; st <= s1; ++st) ++first[std::size_t(st) + 1];
+    }
+    for (int st = 0; st < strips; ++st) first[std::size_t(st) + 1] += first[std::size_t(st)];
+    items.resize(first.back());
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t k = 0; k < count; ++k) {  // in list order, so each bin keeps priority order
+      int s0, s1;
+      strip_range(k, s0, s1);
+      for (int st = s0; st <= s1; ++st) items[fill[std::size_t(st)]++] = std::uint32_t(k);
+    }
+  }
+};
+
+}  // namespace
+
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats) {
+  auto t0 = Clock::now();
+  double resolve_ms = 0;
+  const SampleLattice lattice{frame.raster};
+  const int m = lattice.size();
+  const int n = frame.raster;
+  const int strip_pixels = std::min(kStripPixels, n);
+  const int strip_rows = strip_pixels * kSamplesPerSide;
+  const int strips = n / strip_pixels;
+  RasterImage out{Image(n, n), IdBuffer(n, n)};
+
+  StripBins poly_bins, light_bins;
+  poly_bins.build(frame.polygons.size(), strips, strip_rows, [&](std::size_t k, double& lo, double& hi) {
+    lo = 1e300;
+    hi = -1e300;
+    for (const auto& v : frame.polygons[k].vertices) {
+      lo = std::min(lo, lattice.from_screen(v.ys));
+      hi = std::max(hi, lattice.from_screen(v.ys));
+    }
+  });
+  auto light_geometry = [&](const ScreenLightPoint& l, double& cx, double& cy, double& r) {
+    cx = lattice.from_screen(l.xs);
+    cy = lattice.from_screen(l.ys);
+    r = lattice.length_from_grid(0.5 * std::min(kGridScale * l.ds, kMaxLightDiameterUnits));
+  };
+  light_bins.build(frame.light_points.size(), strips, strip_rows, [&](std::size_t k, double& lo, double& hi) {
+    double cx, cy, r;
+    light_geometry(frame.light_points[k], cx, cy, r);
+    lo = cy - r;
+    hi = cy + r;
+  });
+  stats.polygons += frame.polygons.size();
+  stats.light_points += frame.light_points.size();
+  for (const auto& p : frame.polygons)
+    if (setup_coverage(p, lattice).empty) ++stats.polygons_empty;
+
+  const std::size_t strip_samples = std::size_t(m) * std::size_t(strip_rows);
+  std::vector<double> depth(strip_samples);  // w = 1/Z; 0 = nothing drawn (infinitely far)
+  std::vector<std::int32_t> owner(strip_samples);
+  std::vector<float> intensity(strip_samples);
+  std::vector<std::int32_t> light(strip_samples);
+  const Fog& fog = frame.fog;
+
+  for (int strip = 0; strip < strips; ++strip) {
+    const int row0 = strip * strip_rows, row1 = row0 + strip_rows - 1;
+    std::fill(depth.begin(), depth.end(), 0.0);
+    std::fill(owner.begin(), owner.end(), -1);
+    std::fill(light.begin(), light.end(), -1);
+    for (std::uint32_t b = poly_bins.first[std::size_t(strip)]; b < poly_bins.first[std::size_t(strip) + 1]; ++b) {
+      const std::size_t pi = poly_bins.items[b];
+      const ScreenPolygon& p = frame.polygons[pi];
+      const CoverageSetup cov = setup_coverage(p, lattice);
+      if (cov.empty) continue;
+      const DepthPlane dp = fit_depth_plane(cov, p);
+      double il = 0, slope = 0, xl = 0;  // intensity along the current row: il + slope*(x - xl)
+      const std::int32_t id = std::int32_t(pi);
+      for_each_covered_sample(
+          cov, m, row0, row1,
+          [&](int j, const RowSpan& s) {
+            il = edge_intensity(cov, p, s.el, double(j), s.xl);
+            const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
+            xl = s.xl;
+            slope = s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0;
+          },
+          [&](int i, int j) {
+            if (!screen_door_passes(p.opaque, i, j)) return;
+            ++stats.samples_covered;
+            const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
+            const double w = dp.at(double(i), double(j));
+            if (w > depth[idx]) {
+              depth[idx] = w;
+              owner[idx] = id;
+              intensity[idx] = float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0));
+              ++stats.samples_written;
+            }
+          });
+    }
+
+    // Light points over the polygons; a sample keeps the nearest light (ties: the later one).
+    for (std::uint32_t b = light_bins.first[std::size_t(strip)]; b < light_bins.first[std::size_t(strip) + 1]; ++b) {
+      const std::size_t li = light_bins.items[b];
+      const ScreenLightPoint& l = frame.light_points[li];
+      double cx, cy, r;
+      light_geometry(l, cx, cy, r);
+      const double wl = 1.0 / l.zs;
+      const int j0 = int(std::max(double(row0), std::ceil(cy - r)));
+      const int j1 = int(std::min(double(row1), std::floor(cy + r)));
+      const int i0 = int(std::max(0.0, std::ceil(cx - r)));
+      const int i1 = int(std::min(double(m - 1), std::floor(cx + r)));
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+          const double dx = double(i) - cx, dy = double(j) - cy;
+          if (dx * dx + dy * dy > r * r) continue;
+          const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
+          if (wl < depth[idx]) continue;
+          if (light[idx] >= 0 && wl < 1.0 / frame.light_points[std::size_t(light[idx])].zs) continue;
+          if (light[idx] < 0) ++stats.light_samples;
+          light[idx] = std::int32_t(li);
+        }
+    }
+
+    // Resolve the strip: box filter of the 16 samples of each pixel.
+    const auto t_resolve = Clock::now();
+    for (int py = strip * strip_pixels; py < (strip + 1) * strip_pixels; ++py)
+      for (int px = 0; px < n; ++px) {
+        double sum[3] = {0, 0, 0};
+        std::int32_t ids[kSamplesPerPixel];
+        int nid = 0;
+        for (int sy = 0; sy < kSamplesPerSide; ++sy)
+          for (int sx = 0; sx < kSamplesPerSide; ++sx) {
+            const std::size_t idx = std::size_t(py * kSamplesPerSide + sy - row0) * std::size_t(m) +
+                                    std::size_t(px * kSamplesPerSide + sx);
+            const std::int32_t o = owner[idx];
+            ids[nid++] = o;
+            Rgb c;
+            if (light[idx] >= 0) {
+              const ScreenLightPoint& l = frame.light_points[std::size_t(light[idx])];
+              const double f = fog_factor(fog, l.zs);
+              c = (1 - f) * l.intensity * l.colour + f * fog.colour;
+            } else if (o >= 0) {
+              const double f = fog_factor(fog, 1.0 / depth[idx]);
+              c = (1 - f) * double(intensity[idx]) * frame.polygons[std::size_t(o)].colour + f * fog.colour;
+            } else {
+              c = frame.background;
+            }
+            sum[0] += c.r;
+            sum[1] += c.g;
+            sum[2] += c.b;
+          }
+        std::uint8_t* dst = out.image.at(px, py);
+        for (int k = 0; k < 3; ++k)
+          dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / kSamplesPerPixel, 0.0, 1.0) * 255.0));
+        // Majority owner; ties go to the earlier polygon, background (-1) loses ties.
+        std::sort(ids, ids + nid);
+        std::int32_t best = -1;
+        int best_count = 0;
+        for (int a = 0; a < nid;) {
+          int b = a;
+          while (b < nid && ids[b] == ids[a]) ++b;
+          const int count = b - a;
+          if (count > best_count || (count == best_count && best == -1 && ids[a] >= 0)) {
+            best = ids[a];
+            best_count = count;
+          }
+          a = b;
+        }
+        out.ids.id[std::size_t(py) * std::size_t(n) + std::size_t(px)] = best;
+      }
+    resolve_ms += ms_since(t_resolve);
+  }
+  stats.resolve_ms += resolve_ms;
+  stats.raster_ms += ms_since(t0) - resolve_ms;
+  return out;
+}
+
+}  // namespace cig

@@ -1,0 +1,40 @@
+// Float reference image generator: the ground truth every engine is measured against.
+//
+//  * coverage: 4 x 4 samples per pixel on the formatter grid (sample_lattice.hpp), exact
+//    watertight edge tests with the top-left tie rule (coverage.hpp);
+//  * visibility: z-buffer in double on w = 1/Zs, which is exactly affine in screen space for a
+//    planar polygon (so depth is perspective-correct); equal depths go to the polygon earlier in
+//    the priority list;
+//  * intensity: Gouraud as the seed defines it (eq. 3): along the left and right edges by Y, then
+//    linearly along the row; colour = polygon colour x I;
+//  * fog: linear in eye depth between fog start and end, towards the fog colour;
+//  * light points: discs of diameter D = min(2048*Ds, 7) grid units (eq. 1), depth-tested against
+//    the polygons (a light wins ties with the surface it sits on);
+//  * non-opaque polygons are screen-door transparent (half the samples of a fixed checkerboard);
+//  * resolve: box filter over the 16 samples, rounded to 8 bits; the id of a pixel is the
+//    polygon owning most of its samples (ties: the earlier polygon; background loses ties).
+#pragma once
+
+#include <cstdint>
+
+#include "frame/screen_frame.hpp"
+#include "image/image.hpp"
+
+namespace cig {
+
+struct ReferenceStats {
+  std::uint64_t polygons = 0, polygons_empty = 0;
+  std::uint64_t samples_covered = 0;   // covered samples (before the depth test)
+  std::uint64_t samples_written = 0;   // samples that passed the depth test when drawn
+  std::uint64_t light_points = 0, light_samples = 0;
+  double raster_ms = 0, resolve_ms = 0;
+};
+
+struct RasterImage {
+  Image image;
+  IdBuffer ids;
+};
+
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats);
+
+}  // namespace cig

@@ -1,0 +1,37 @@
+// Sample positions of the float reference on the formatter's 4096 x 4096 grid (SPEC C).
+//
+// The formatter maps Xs in [-1, 1] to X = 2048*Xs + 2047, so the screen spans X in [-1, 4095].
+// A raster of N pixels gives each pixel u = 4096/N grid units; pixel p spans
+// [u*p - 1, u*p - 1 + u). Each pixel holds kSamplesPerSide x kSamplesPerSide = 4 x 4 samples on a
+// regular grid, sample s at u*p - 1 + (2s + 1)*u/8 (stratified, centred in its cell). At N = 512
+// (u = 8) the samples lie on the even grid units 8p, 8p+2, 8p+4, 8p+6: integers, so on snapped
+// vertices every edge test is exact.
+//
+// All coverage work happens in *sample coordinates*: sample (i, j) of the whole raster sits at
+// (i, j), i, j in [0, 4N). The map from grid units is x = (X + 1 - u/8) * 4/u, a power-of-two
+// scale and a dyadic offset, hence exact in double for snapped vertices.
+#pragma once
+
+#include "frame/screen_frame.hpp"
+
+namespace cig {
+
+constexpr int kSamplesPerSide = 4;
+constexpr int kSamplesPerPixel = kSamplesPerSide * kSamplesPerSide;
+
+struct SampleLattice {
+  int raster = 512;                 // N
+  int size() const { return raster * kSamplesPerSide; }  // samples per row and per column
+  double units_per_pixel() const { return 4096.0 / raster; }
+  // Grid units -> sample coordinates.
+  double from_grid(double g) const {
+    const double u = units_per_pixel();
+    return (g + 1.0 - u / 8.0) * (kSamplesPerSide / u);
+  }
+  // Screen coordinate (Xs or Ys) -> sample coordinate.
+  double from_screen(double s) const { return from_grid(grid_x(s)); }
+  // Grid units (a length) -> sample units.
+  double length_from_grid(double d) const { return d * (kSamplesPerSide / units_per_pixel()); }
+};
+
+}  // namespace cig

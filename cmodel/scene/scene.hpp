@@ -1,0 +1,120 @@
+// The scene database (stage A's input): objects made of subobjects made of convex planar
+// polygons, light points, the observer path, the channels and the environment. Loaded from the
+// JSON format documented in scenes/README.md. World axes: x east, y north, z up (metres).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+namespace cig {
+
+using Rgb = glm::dvec3;  // linear colour, each component in [0, 1]
+
+// Limits shared by every stage. The geometric processor clips a polygon against five planes
+// (near + four pyramid sides), each adding at most one vertex, so a scene polygon of at most
+// kMaxSceneVertices reaches the raster engines with at most kMaxScreenVertices vertices.
+constexpr int kMaxScreenVertices = 16;
+constexpr int kClipPlanes = 5;
+constexpr int kMaxSceneVertices = kMaxScreenVertices - kClipPlanes;
+// Raster sizes 2^n accepted by the whole pipeline.
+constexpr int kMinRaster = 16;
+constexpr int kMaxRaster = 4096;
+
+struct Polygon {
+  std::vector<std::uint32_t> indices;  // into Subobject::vertices, counter-clockwise seen from the front
+  Rgb colour{1, 1, 1};
+  bool opaque = true;      // false: screen-door transparent (covers half the sub-pixel samples)
+  bool protect = false;    // protected from overload culling (area code 0 in the segment processor)
+  // Self-lit polygons (sky, lit windows) carry their own vertex intensities instead of sun lighting.
+  bool self_lit = false;
+  std::vector<double> self_intensity;  // one per vertex when self_lit
+};
+
+struct Subobject {
+  std::string name;
+  std::vector<glm::dvec3> vertices;  // object coordinates
+  std::vector<Polygon> polygons;
+  double crease_angle_deg = 50;      // vertex normals average only faces within this angle
+  glm::dvec3 centre{0};              // object coordinates; used for depth sorting of subobjects
+};
+
+struct LightPoint {
+  glm::dvec3 position{0};  // object coordinates
+  double diameter = 1;     // metres
+  Rgb colour{1, 1, 1};
+  double intensity = 1;    // [0, 1]
+};
+
+struct Pose {
+  glm::dvec3 position{0};
+  double heading_deg = 0, pitch_deg = 0, roll_deg = 0;
+};
+
+struct Object {
+  std::string name;
+  Pose pose;
+  std::vector<Subobject> subobjects;
+  std::vector<LightPoint> light_points;
+  glm::dvec3 sphere_centre{0};  // object coordinates
+  double sphere_radius = 0;
+  bool sphere_given = false;
+};
+
+struct Keyframe {
+  int frame = 0;
+  Pose pose;
+};
+
+struct Channel {
+  std::string name;
+  double yaw_deg = 0, pitch_deg = 0;  // offsets from the observer's orientation
+  double fov_deg = 40;                // full field of view, horizontal = vertical (square raster)
+};
+
+struct Lighting {
+  glm::dvec3 sun_direction{0, 0, 1};  // unit vector pointing towards the sun
+  double sun_intensity = 0.7;
+  double ambient = 0.3;
+};
+
+struct Fog {
+  Rgb colour{0.5, 0.5, 0.5};
+  double start = 1e30, end = 2e30;  // eye depth (metres) where fog begins and becomes total
+};
+
+struct LightPointRendering {
+  // Projected light diameters are raised to at least this many formatter grid units, so that a
+  // distant runway light still covers sub-pixel samples (real CIGs draw a minimum spot size).
+  double min_diameter_units = 3;
+};
+
+struct Scene {
+  std::string file;  // where it was loaded from; relative model paths resolve against it
+  std::string name;
+  int raster = 512;
+  double near = 1.0;
+  std::vector<Channel> channels;
+  Lighting lighting;
+  Fog fog;
+  Rgb background{0.5, 0.5, 0.5};
+  LightPointRendering light_rendering;
+  std::vector<Keyframe> keyframes;  // strictly increasing frames, the first at frame 0
+  std::vector<Object> objects;
+
+  int frame_count() const { return keyframes.empty() ? 0 : keyframes.back().frame + 1; }
+  std::size_t polygon_count() const;
+  std::size_t light_point_count() const;
+};
+
+// Rotation from body axes (x right, y forward, z up) to world axes for a heading (clockwise from
+// north), pitch (nose up) and roll (right wing down), all in degrees.
+glm::dmat3 body_to_world(double heading_deg, double pitch_deg, double roll_deg);
+
+// Observer pose at `frame` by linear interpolation between keyframes (heading along the shorter arc).
+Pose observer_pose(const Scene& scene, int frame);
+
+}  // namespace cig

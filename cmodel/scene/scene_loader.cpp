@@ -1,0 +1,283 @@
+#include "scene/scene_loader.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <glm/geometric.hpp>
+
+#include "common/json_reader.hpp"
+#include "scene/obj_loader.hpp"
+#include "scene/polygon_checks.hpp"
+
+namespace cig {
+
+bool valid_raster_size(long long n) {
+  return n >= kMinRaster && n <= kMaxRaster && (n & (n - 1)) == 0;
+}
+
+namespace {
+
+Pose read_pose(const JsonNode& n) {
+  Pose p;
+  p.position = n.at("position").vec3();
+  p.heading_deg = n.number_or("heading", 0);
+  p.pitch_deg = n.number_or("pitch", 0);
+  p.roll_deg = n.number_or("roll", 0);
+  if (std::abs(p.pitch_deg) > 90) n.at("pitch").fail("pitch must lie in [-90, 90] degrees");
+  return p;
+}
+
+// Polygon attributes that a subobject may set once for all its polygons.
+struct PolygonDefaults {
+  Rgb colour{1, 1, 1};
+  bool opaque = true;
+  bool protect = false;
+};
+
+PolygonDefaults read_defaults(const JsonNode& n) {
+  PolygonDefaults d;
+  if (auto c = n.find("colour")) d.colour = c->colour();
+  d.opaque = n.boolean_or("opaque", true);
+  d.protect = n.boolean_or("protected", false);
+  return d;
+}
+
+Polygon read_polygon(const JsonNode& n, const Subobject& sub, const PolygonDefaults& d) {
+  n.allow_only({"indices", "colour", "opaque", "protected", "intensity"});
+  Polygon p;
+  JsonNode idx = n.at("indices");
+  std::size_t count = idx.array_size();
+  if (count < 3)
+    idx.fail("polygon has " + std::to_string(count) + " vertices; at least 3 are required");
+  if (count > std::size_t(kMaxSceneVertices))
+    idx.fail("polygon has " + std::to_string(count) + " vertices; at most " +
+             std::to_string(kMaxSceneVertices) + " are accepted (clipping may add " +
+             std::to_string(kClipPlanes) + ")");
+  std::vector<glm::dvec3> pts;
+  for (std::size_t i = 0; i < count; ++i) {
+    long long v = idx[i].integer();
+    if (v < 0 || v >= (long long)sub.vertices.size())
+      idx[i].fail("vertex index " + std::to_string(v) + " is out of range (subobject has " +
+                  std::to_string(sub.vertices.size()) + " vertices)");
+    p.indices.push_back(std::uint32_t(v));
+    pts.push_back(sub.vertices[std::size_t(v)]);
+  }
+  std::string rule = check_convex_planar(pts);
+  if (!rule.empty()) n.fail(rule);
+  p.colour = d.colour;
+  p.opaque = d.opaque;
+  p.protect = d.protect;
+  if (auto c = n.find("colour")) p.colour = c->colour();
+  p.opaque = n.boolean_or("opaque", p.opaque);
+  p.protect = n.boolean_or("protected", p.protect);
+  if (auto in = n.find("intensity")) {
+    p.self_lit = true;
+    if (in->raw().is_array()) {
+      in->array_size(count, count);
+      for (std::size_t i = 0; i < count; ++i) p.self_intensity.push_back((*in)[i].number(0, 1));
+    } else {
+      p.self_intensity.assign(count, in->number(0, 1));
+    }
+  }
+  return p;
+}
+
+Subobject read_subobject(const JsonNode& n, const std::string& scene_file) {
+  n.allow_only({"name", "vertices", "polygons", "obj", "offset", "scale", "crease_angle", "colour",
+                "opaque", "protected"});
+  Subobject s;
+  if (auto nm = n.find("name")) s.name = nm->string();
+  s.crease_angle_deg = n.find("crease_angle") ? n.at("crease_angle").number(0, 180) : 50.0;
+  PolygonDefaults d = read_defaults(n);
+  if (n.has("obj")) {
+    if (n.has("vertices") || n.has("polygons"))
+      n.fail("a subobject takes either 'obj' or 'vertices' + 'polygons', not both");
+    std::filesystem::path model = n.at("obj").string();
+    if (model.is_relative()) model = std::filesystem::path(scene_file).parent_path() / model;
+    glm::dvec3 offset = n.find("offset") ? n.at("offset").vec3() : glm::dvec3(0);
+    double scale = n.find("scale") ? n.at("scale").positive() : 1.0;
+    ObjMesh mesh = load_obj(model.lexically_normal().string());
+    for (const auto& v : mesh.vertices) s.vertices.push_back(offset + scale * v);
+    for (const auto& f : mesh.faces) {
+      if (f.size() > std::size_t(kMaxSceneVertices)) n.fail("model face has too many vertices");
+      Polygon p;
+      p.indices = f;
+      p.colour = d.colour;
+      p.opaque = d.opaque;
+      p.protect = d.protect;
+      s.polygons.push_back(std::move(p));
+    }
+  } else {
+    if (n.has("offset") || n.has("scale")) n.fail("'offset' and 'scale' apply only to 'obj' subobjects");
+    JsonNode verts = n.at("vertices");
+    std::size_t nv = verts.array_size();
+    if (nv < 3) verts.fail("a subobject needs at least 3 vertices");
+    for (std::size_t i = 0; i < nv; ++i) s.vertices.push_back(verts[i].vec3());
+    JsonNode polys = n.at("polygons");
+    std::size_t np = polys.array_size();
+    if (np == 0) polys.fail("a subobject needs at least one polygon");
+    for (std::size_t i = 0; i < np; ++i) s.polygons.push_back(read_polygon(polys[i], s, d));
+  }
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const auto& v : s.vertices) { lo = glm::min(lo, v); hi = glm::max(hi, v); }
+  s.centre = 0.5 * (lo + hi);
+  return s;
+}
+
+LightPoint read_light_point(const JsonNode& n) {
+  n.allow_only({"position", "diameter", "colour", "intensity"});
+  LightPoint l;
+  l.position = n.at("position").vec3();
+  l.diameter = n.at("diameter").number();
+  if (!(l.diameter > 0)) n.at("diameter").fail("light-point diameter must be positive");
+  if (auto c = n.find("colour")) l.colour = c->colour();
+  if (auto i = n.find("intensity")) l.intensity = i->number(0, 1);
+  return l;
+}
+
+Object read_object(const JsonNode& n, const std::string& scene_file) {
+  n.allow_only({"name", "position", "heading", "pitch", "roll", "bounding_sphere", "subobjects",
+                "light_points"});
+  Object o;
+  if (auto nm = n.find("name")) o.name = nm->string();
+  if (n.has("position")) o.pose = read_pose(n);
+  else {
+    o.pose.heading_deg = n.number_or("heading", 0);
+    o.pose.pitch_deg = n.number_or("pitch", 0);
+    o.pose.roll_deg = n.number_or("roll", 0);
+  }
+  if (auto subs = n.find("subobjects")) {
+    std::size_t ns = subs->array_size();
+    for (std::size_t i = 0; i < ns; ++i) o.subobjects.push_back(read_subobject((*subs)[i], scene_file));
+  }
+  if (auto lps = n.find("light_points")) {
+    std::size_t nl = lps->array_size();
+    for (std::size_t i = 0; i < nl; ++i) o.light_points.push_back(read_light_point((*lps)[i]));
+  }
+  if (o.subobjects.empty() && o.light_points.empty())
+    n.fail("an object needs at least one subobject or light point");
+
+  // Bounding sphere in object coordinates: the scene manager culls with it, so it must enclose
+  // every vertex and light point (a visible object must never be flagged invisible).
+  if (auto bs = n.find("bounding_sphere")) {
+    bs->allow_only({"centre", "radius"});
+    o.sphere_centre = bs->at("centre").vec3();
+    o.sphere_radius = bs->at("radius").number();
+    if (o.sphere_radius < 0) bs->at("radius").fail("radius must not be negative");
+    o.sphere_given = true;
+    const double slack = 1e-9 * std::max(1.0, o.sphere_radius);
+    for (std::size_t si = 0; si < o.subobjects.size(); ++si)
+      for (const auto& v : o.subobjects[si].vertices)
+        if (glm::length(v - o.sphere_centre) > o.sphere_radius + slack)
+          bs->fail("bounding sphere does not enclose every vertex (subobject " + std::to_string(si) +
+                   " reaches " + std::to_string(glm::length(v - o.sphere_centre)) + " from the centre)");
+    for (const auto& l : o.light_points)
+      if (glm::length(l.position - o.sphere_centre) > o.sphere_radius + slack)
+        bs->fail("bounding sphere does not enclose every light point");
+  } else {
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto& s : o.subobjects)
+      for (const auto& v : s.vertices) { lo = glm::min(lo, v); hi = glm::max(hi, v); }
+    for (const auto& l : o.light_points) { lo = glm::min(lo, l.position); hi = glm::max(hi, l.position); }
+    o.sphere_centre = 0.5 * (lo + hi);
+    double r = 0;
+    for (const auto& s : o.subobjects)
+      for (const auto& v : s.vertices) r = std::max(r, glm::length(v - o.sphere_centre));
+    for (const auto& l : o.light_points) r = std::max(r, glm::length(l.position - o.sphere_centre));
+    o.sphere_radius = r * (1 + 1e-12);
+  }
+  return o;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& file) {
+  nlohmann::json doc = parse_json_text(text, file);
+  JsonNode root(doc, file, "");
+  if (root.at("format").string() != "cig-scene")
+    root.at("format").fail("must be \"cig-scene\" (a polygon list uses \"cig-polys\")");
+  root.allow_only({"format", "version", "name", "raster", "view", "channels", "lighting", "fog",
+                   "background", "observer", "objects"});
+  if (root.at("version").integer() != 1) root.at("version").fail("only version 1 is supported");
+
+  Scene s;
+  s.file = file;
+  if (auto nm = root.find("name")) s.name = nm->string();
+  if (auto r = root.find("raster")) {
+    long long n = r->integer();
+    if (!valid_raster_size(n))
+      r->fail("raster size " + std::to_string(n) + " is not a power of two in [" +
+              std::to_string(kMinRaster) + ", " + std::to_string(kMaxRaster) + "]");
+    s.raster = int(n);
+  }
+  if (auto v = root.find("view")) {
+    v->allow_only({"near", "light_point_min_diameter"});
+    if (v->has("near")) s.near = v->at("near").positive();
+    if (v->has("light_point_min_diameter"))
+      s.light_rendering.min_diameter_units = v->at("light_point_min_diameter").number(0, 7);
+  }
+
+  JsonNode chans = root.at("channels");
+  std::size_t nc = chans.array_size();
+  if (nc < 1 || nc > 8) chans.fail("a scene has 1 to 8 channels, found " + std::to_string(nc));
+  for (std::size_t i = 0; i < nc; ++i) {
+    JsonNode c = chans[i];
+    c.allow_only({"name", "yaw", "pitch", "fov"});
+    Channel ch;
+    ch.name = c.find("name") ? c.at("name").string() : "ch" + std::to_string(i);
+    ch.yaw_deg = c.number_or("yaw", 0);
+    ch.pitch_deg = c.find("pitch") ? c.at("pitch").number(-90, 90) : 0.0;
+    double fov = c.at("fov").number();
+    if (!(fov > 0)) c.at("fov").fail("field of view must be positive, is " + std::to_string(fov));
+    if (!(fov < 170)) c.at("fov").fail("field of view must be below 170 degrees, is " + std::to_string(fov));
+    ch.fov_deg = fov;
+    s.channels.push_back(ch);
+  }
+
+  if (auto l = root.find("lighting")) {
+    l->allow_only({"sun_direction", "sun_intensity", "ambient"});
+    glm::dvec3 d = l->at("sun_direction").vec3();
+    if (glm::length(d) == 0) l->at("sun_direction").fail("sun direction must not be the zero vector");
+    s.lighting.sun_direction = glm::normalize(d);
+    if (l->has("sun_intensity")) s.lighting.sun_intensity = l->at("sun_intensity").number(0, 1);
+    if (l->has("ambient")) s.lighting.ambient = l->at("ambient").number(0, 1);
+  }
+  bool has_fog = false;
+  if (auto f = root.find("fog")) {
+    f->allow_only({"colour", "start", "end"});
+    s.fog.colour = f->at("colour").colour();
+    s.fog.start = f->at("start").number();
+    s.fog.end = f->at("end").number();
+    if (s.fog.start < 0) f->at("start").fail("fog start must not be negative");
+    if (!(s.fog.end > s.fog.start)) f->at("end").fail("fog end must be greater than fog start");
+    has_fog = true;
+  }
+  s.background = has_fog ? s.fog.colour : Rgb(0);
+  if (auto b = root.find("background")) s.background = b->colour();
+
+  JsonNode obs = root.at("observer");
+  obs.allow_only({"keyframes"});
+  JsonNode kfs = obs.at("keyframes");
+  std::size_t nk = kfs.array_size();
+  if (nk == 0) kfs.fail("the observer path needs at least one keyframe");
+  for (std::size_t i = 0; i < nk; ++i) {
+    JsonNode k = kfs[i];
+    k.allow_only({"frame", "position", "heading", "pitch", "roll"});
+    Keyframe kf;
+    kf.frame = int(k.at("frame").integer(0, 10'000'000));
+    kf.pose = read_pose(k);
+    if (i == 0 && kf.frame != 0) k.at("frame").fail("the first keyframe must be at frame 0");
+    if (i > 0 && kf.frame <= s.keyframes.back().frame)
+      k.at("frame").fail("keyframe frames must be strictly increasing");
+    s.keyframes.push_back(kf);
+  }
+
+  JsonNode objs = root.at("objects");
+  std::size_t no = objs.array_size();
+  for (std::size_t i = 0; i < no; ++i) s.objects.push_back(read_object(objs[i], file));
+  return s;
+}
+
+Scene load_scene(const std::string& file) { return parse_scene(read_text_file(file), file); }
+
+}  // namespace cig

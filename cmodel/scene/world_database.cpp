@@ -1,0 +1,87 @@
+#include "scene/world_database.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "scene/polygon_checks.hpp"
+
+namespace cig {
+
+double gouraud_intensity(const Lighting& l, const glm::dvec3& n) {
+  double i = l.ambient + l.sun_intensity * std::max(0.0, glm::dot(n, l.sun_direction));
+  return std::min(1.0, std::max(0.0, i));
+}
+
+namespace {
+
+WorldSubobject place_subobject(const Subobject& s, const glm::dmat3& rot, const glm::dvec3& pos,
+                               const Lighting& lighting) {
+  WorldSubobject w;
+  w.vertices.reserve(s.vertices.size());
+  for (const auto& v : s.vertices) w.vertices.push_back(rot * v + pos);
+
+  const std::size_t np = s.polygons.size();
+  std::vector<glm::dvec3> pts;
+  for (const auto& p : s.polygons) {
+    pts.clear();
+    for (auto i : p.indices) pts.push_back(w.vertices[i]);
+    glm::dvec3 n = glm::normalize(newell_normal(pts));
+    w.face_normal.push_back(n);
+    glm::dvec3 c(0);
+    for (const auto& q : pts) c += q / double(pts.size());
+    w.face_offset.push_back(glm::dot(n, c));
+  }
+
+  // Faces around each vertex, for the averaged vertex normals.
+  std::vector<std::vector<std::uint32_t>> faces_at(w.vertices.size());
+  for (std::uint32_t f = 0; f < np; ++f)
+    for (auto i : s.polygons[f].indices) faces_at[i].push_back(f);
+
+  const double cos_crease = std::cos(glm::radians(s.crease_angle_deg)) - 1e-12;
+  w.first_corner.push_back(0);
+  for (std::uint32_t f = 0; f < np; ++f) {
+    const Polygon& p = s.polygons[f];
+    for (std::size_t k = 0; k < p.indices.size(); ++k) {
+      if (p.self_lit) {
+        w.corner_intensity.push_back(p.self_intensity[k]);
+        continue;
+      }
+      glm::dvec3 sum(0);
+      for (auto g : faces_at[p.indices[k]])
+        if (glm::dot(w.face_normal[g], w.face_normal[f]) >= cos_crease) sum += w.face_normal[g];
+      glm::dvec3 n = glm::length(sum) > 0 ? glm::normalize(sum) : w.face_normal[f];
+      w.corner_intensity.push_back(gouraud_intensity(lighting, n));
+    }
+    w.first_corner.push_back(std::uint32_t(w.corner_intensity.size()));
+  }
+
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const auto& v : w.vertices) { lo = glm::min(lo, v); hi = glm::max(hi, v); }
+  w.centre = 0.5 * (lo + hi);
+  for (const auto& v : w.vertices) w.radius = std::max(w.radius, glm::length(v - w.centre));
+  w.radius *= 1 + 1e-12;
+  return w;
+}
+
+}  // namespace
+
+WorldDatabase build_world_database(const Scene& scene) {
+  WorldDatabase db;
+  db.objects.reserve(scene.objects.size());
+  for (const auto& o : scene.objects) {
+    WorldObject w;
+    glm::dmat3 rot = body_to_world(o.pose.heading_deg, o.pose.pitch_deg, o.pose.roll_deg);
+    for (const auto& s : o.subobjects) w.subobjects.push_back(place_subobject(s, rot, o.pose.position, scene.lighting));
+    for (const auto& l : o.light_points) w.light_positions.push_back(rot * l.position + o.pose.position);
+    w.centre = rot * o.sphere_centre + o.pose.position;
+    w.radius = o.sphere_radius;
+    db.objects.push_back(std::move(w));
+  }
+  return db;
+}
+
+}  // namespace cig

@@ -1,0 +1,43 @@
+// The scene placed in world coordinates, with everything that does not change from frame to
+// frame computed once at load: world vertices, face planes, crease-aware Gouraud vertex
+// intensities (SPEC B: a vertex normal averages the normals of the faces sharing the vertex),
+// bounding spheres of objects and subobjects. Objects have static poses, so none of this is
+// recomputed per frame or per channel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.hpp"
+
+namespace cig {
+
+struct WorldSubobject {
+  std::vector<glm::dvec3> vertices;       // world coordinates
+  std::vector<glm::dvec3> face_normal;    // unit, world, one per polygon (front side)
+  std::vector<double> face_offset;        // plane: dot(face_normal, p) = face_offset
+  std::vector<std::uint32_t> first_corner;  // polygon i's corners: [first_corner[i], first_corner[i+1])
+  std::vector<double> corner_intensity;   // Gouraud intensity per polygon corner, [0, 1]
+  glm::dvec3 centre{0};                   // bounding sphere, world
+  double radius = 0;
+};
+
+struct WorldObject {
+  std::vector<WorldSubobject> subobjects;
+  std::vector<glm::dvec3> light_positions;  // world
+  glm::dvec3 centre{0};
+  double radius = 0;
+};
+
+struct WorldDatabase {
+  std::vector<WorldObject> objects;
+};
+
+WorldDatabase build_world_database(const Scene& scene);
+
+// Intensity of a surface with unit normal n under the scene's sun and ambient light.
+double gouraud_intensity(const Lighting& l, const glm::dvec3& n);
+
+}  // namespace cig

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs, only those missing (apt-get; as root, or
+# through sudo otherwise). Everything the build uses comes from these packages.
+set -euo pipefail
+packages=(
+  g++ cmake make pkg-config       # toolchain
+  libgtest-dev libbenchmark-dev   # GoogleTest, Google Benchmark
+  libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev
+  assimp-testmodels               # real OBJ models for the loader tests
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "deps: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
