@@ -1272,6 +1272,19 @@ def jstr(s):
     return out + '"'
 
 
+def object_layer(name):
+    """Priority class for the scene manager: the sky behind everything, the sun disc in front of
+    the sky, surfaces that things stand on below the things on them."""
+    if name.startswith('sky_'):
+        return -3
+    if name == 'sun':
+        return -2
+    if name.startswith(('terrain_', 'runway_', 'taxiways', 'apron', 'road_', 'carpark_')) and name != 'carpark_cars' \
+            and name != 'carpark_lamps':
+        return -1
+    return 0
+
+
 def obj_world_pose(o):
     if o.frame == 'W':
         return o.origin, 0.0
@@ -1302,6 +1315,9 @@ def write(frames, out):
         first = False
         pos, hdg = obj_world_pose(o)
         w('{ "name": %s, "position": %s' % (jstr(o.name), vec(pos)))
+        layer = object_layer(o.name)
+        if layer:
+            w(', "layer": %d' % layer)
         if hdg:
             w(', "heading": %s' % num(hdg))
         if o.sphere:

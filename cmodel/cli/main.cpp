@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/cli_common.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
@@ -19,71 +20,7 @@
 namespace cig {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-struct EngineArgs {
-  std::string engine = "float";
-  std::vector<std::string> opts;
-  bool snap = false;
-
-  void add_to(CLI::App* app) {
-    app->add_option("--engine", engine, "raster engine (" + [] {
-      std::string s;
-      for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
-      return s;
-    }() + ")");
-    app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
-    app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
-  }
-  EngineOptions options() const {
-    EngineOptions o;
-    o.snap = snap;
-    for (const auto& kv : opts) {
-      auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw InputError("", "--engine-opt", "'" + kv + "' is not of the form KEY=VALUE");
-      o.params[kv.substr(0, eq)] = kv.substr(eq + 1);
-    }
-    make_engine(engine, o);  // validates the name and the options before any work
-    return o;
-  }
-};
-
-// "A:B" (inclusive) or "K".
-void parse_frames(const std::string& text, int& a, int& b) {
-  auto bad = [&] { throw InputError("", "--frames", "'" + text + "' is not of the form A:B (inclusive, A <= B)"); };
-  auto colon = text.find(':');
-  try {
-    std::size_t used = 0;
-    if (colon == std::string::npos) {
-      a = b = std::stoi(text, &used);
-      if (used != text.size()) bad();
-    } else {
-      a = std::stoi(text.substr(0, colon), &used);
-      if (used != colon) bad();
-      b = std::stoi(text.substr(colon + 1), &used);
-      if (used != text.size() - colon - 1) bad();
-    }
-  } catch (const std::logic_error&) {
-    bad();
-  }
-  if (a < 0 || b < a) bad();
-}
-
-std::string frame_name(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "frame_%04d", frame);
-  return buf;
-}
-
-std::string safe_name(const std::string& s) {
-  std::string r;
-  for (char c : s) r += (std::isalnum((unsigned char)c) || c == '-' || c == '_') ? c : '_';
-  return r;
-}
+using namespace cli;
 
 int run(int argc, char** argv) {
   CLI::App app{"cig: computer image generator C model (float reference, bit-accurate engines)"};
@@ -124,6 +61,9 @@ int run(int argc, char** argv) {
   polys->add_option("--channel", polys_channel, "channel")->required();
   polys->add_option("--out", polys_out, "output polygon list (JSON)")->required();
 
+  CompareCommand compare;
+  compare.add_to(app);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -142,14 +82,7 @@ int run(int argc, char** argv) {
     Scene scene = load_scene(scene_file);
     const double load_ms = ms_since(t_load);
     int a = 0, b = 0;
-    if (!frames_text.empty()) parse_frames(frames_text, a, b);
-    else if (frame_k >= 0) a = b = frame_k;
-    else if (fopt->count()) throw InputError("", "--frame", "frame must not be negative");
-    const int last = scene.frame_count() - 1;
-    if (b > last)
-      throw InputError(scene_file, "observer.keyframes",
-                       "frame " + std::to_string(b) + " lies outside the observer path (frames 0.." +
-                           std::to_string(last) + ")");
+    frame_range(frames_text, frame_k, fopt->count() > 0, scene.frame_count(), scene_file, a, b);
     std::vector<int> channels;
     if (channel >= 0) {
       if (channel >= int(scene.channels.size()))
@@ -245,6 +178,8 @@ int run(int argc, char** argv) {
               << " light point(s) with engine " << raster_engine.engine << " to " << raster_out << "\n";
     return 0;
   }
+
+  if (*compare.sub) return compare.run();
 
   if (*polys) {
     Scene scene = load_scene(polys_scene);

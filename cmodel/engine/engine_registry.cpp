@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "engine/engine.hpp"
+#include "segment/segment_engine.hpp"
 
 namespace cig {
 
@@ -14,7 +15,7 @@ class FloatEngine : public RasterEngine {
   EngineRun render(const ScreenFrame& frame) override {
     ReferenceStats st;
     EngineRun run;
-    if (options_.snap) run.out = render_reference(snap_to_formatter_grid(frame), st);
+    if (options_.snap) run.out = render_reference_snapped(frame, st);
     else run.out = render_reference(frame, st);
     run.report["engine"] = "float";
     run.report["snapped"] = options_.snap;
@@ -35,7 +36,7 @@ class FloatEngine : public RasterEngine {
 
 }  // namespace
 
-std::vector<std::string> engine_names() { return {"float"}; }
+std::vector<std::string> engine_names() { return {"float", "segment", "segment-double"}; }
 
 std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
   auto reject_params = [&](const char* engine) {
@@ -47,6 +48,8 @@ std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineO
     reject_params("float");
     return std::make_unique<FloatEngine>(options);
   }
+  if (name == "segment") return make_segment_engine(options, false);
+  if (name == "segment-double") return make_segment_engine(options, true);
   std::string known;
   for (const auto& n : engine_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError("", "--engine", "unknown engine '" + name + "' (known: " + known + ")");

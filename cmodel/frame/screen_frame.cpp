@@ -96,7 +96,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
     std::size_t nl = lps->array_size();
     for (std::size_t i = 0; i < nl; ++i) {
       JsonNode l = (*lps)[i];
-      l.allow_only({"centre", "diameter", "colour", "intensity"});
+      l.allow_only({"centre", "diameter", "colour", "intensity", "priority"});
       ScreenLightPoint lp;
       JsonNode c = l.at("centre");
       c.array_size(3, 3);
@@ -106,6 +106,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
       lp.ds = l.at("diameter").number(0, 1);
       if (auto col = l.find("colour")) lp.colour = col->colour();
       lp.intensity = l.find("intensity") ? l.at("intensity").number(0, 1) : 1.0;
+      if (auto pr = l.find("priority")) lp.priority = std::int32_t(pr->integer(0, (long long)np));
       f.light_points.push_back(lp);
     }
   }
@@ -150,7 +151,7 @@ std::string polygon_list_json(const ScreenFrame& f) {
     s << (i ? ",\n" : "\n") << "    {\"centre\": [" << l.xs << ", " << l.ys << ", " << l.zs
       << "], \"diameter\": " << l.ds << ", \"colour\": ";
     rgb(l.colour);
-    s << ", \"intensity\": " << l.intensity << "}";
+    s << ", \"intensity\": " << l.intensity << ", \"priority\": " << l.priority << "}";
   }
   s << "\n  ]\n}\n";
   return s.str();

@@ -33,6 +33,10 @@ struct ScreenLightPoint {
   double ds = 0;  // diameter in the units of Xs (2 = the screen width)
   Rgb colour{1, 1, 1};
   double intensity = 1;
+  // Priority-order position: the light ranks just before polygon `priority` of the list (its own
+  // object's first polygon), so nearer objects' surfaces hide it in engines that resolve
+  // visibility by priority. 0: above every polygon.
+  std::int32_t priority = 0;
 };
 
 // Polygons are in priority order: index 0 has the highest priority (nearest). Engines that

@@ -15,6 +15,7 @@ bool sphere_may_be_visible(const ViewPyramid& pyramid, const glm::dvec3& c, doub
 
 PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, SceneManagerStats& stats) {
   struct Visible {
+    int layer;
     double distance;
     std::uint32_t object;
   };
@@ -24,24 +25,27 @@ PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, Sc
   for (std::uint32_t i = 0; i < db.objects.size(); ++i) {
     const WorldObject& o = db.objects[i];
     glm::dvec3 c = view.to_eye(o.centre);
-    if (sphere_may_be_visible(pyramid, c, o.radius)) visible.push_back({glm::length(c), i});
+    if (sphere_may_be_visible(pyramid, c, o.radius)) visible.push_back({o.layer, glm::length(c), i});
   }
   stats.objects_visible += visible.size();
-  // Depth sort by distance to the centre (SPEC A.3); stable so equal distances keep database order.
-  std::stable_sort(visible.begin(), visible.end(),
-                   [](const Visible& a, const Visible& b) { return a.distance < b.distance; });
+  // Priority layers first (higher first), then the depth sort by distance to the centre
+  // (SPEC A.3); stable, so equal keys keep database order.
+  std::stable_sort(visible.begin(), visible.end(), [](const Visible& a, const Visible& b) {
+    return a.layer != b.layer ? a.layer > b.layer : a.distance < b.distance;
+  });
   PriorityList list;
   for (const auto& vis : visible) {
     const WorldObject& o = db.objects[vis.object];
+    PriorityEntry entry{vis.object, {}};
     for (std::uint32_t s = 0; s < o.subobjects.size(); ++s) {
       ++stats.subobjects_tested;
       const WorldSubobject& sub = o.subobjects[s];
       if (sphere_may_be_visible(pyramid, view.to_eye(sub.centre), sub.radius)) {
-        list.subobjects.push_back({vis.object, s});
+        entry.subobjects.push_back(s);
         ++stats.subobjects_visible;
       }
     }
-    if (!o.light_positions.empty()) list.light_objects.push_back(vis.object);
+    if (!entry.subobjects.empty() || !o.light_positions.empty()) list.objects.push_back(std::move(entry));
   }
   return list;
 }

@@ -3,8 +3,8 @@
 //
 // Implemented now: visibility flags from bounding spheres against the viewing pyramid
 // (conservative: a sphere is culled only when it lies wholly outside one plane), for objects and
-// then their subobjects; objects in order of distance from the observer, nearest first (highest
-// priority); subobjects in database order, which is the modeller's priority order (decals such as
+// then their subobjects; objects by priority layer (higher first), then by distance from the
+// observer, nearest first (highest priority); subobjects in database order, which is the modeller's priority order (decals such as
 // runway markings are listed before the surface they lie on).
 // Planned (scene-manager issue): occlusion groups, depth-sorted group lists with the seed's
 // two-list merge, channel loading from Nc disjoint lists, the seed's operation counts, and the
@@ -20,19 +20,20 @@
 
 namespace cig {
 
-struct SubobjectRef {
-  std::uint32_t object, subobject;
-};
-
 struct SceneManagerStats {
   std::uint64_t objects = 0, objects_visible = 0;
   std::uint64_t subobjects_tested = 0, subobjects_visible = 0;
   double ms = 0;
 };
 
+// One visible object and its visible subobjects, in priority order (highest first).
+struct PriorityEntry {
+  std::uint32_t object;
+  std::vector<std::uint32_t> subobjects;
+};
+
 struct PriorityList {
-  std::vector<SubobjectRef> subobjects;  // priority order, highest first
-  std::vector<std::uint32_t> light_objects;  // visible objects that carry light points
+  std::vector<PriorityEntry> objects;  // priority order, highest first
 };
 
 // Sphere against the viewing pyramid in eye coordinates: false only if wholly outside a plane.

@@ -41,9 +41,18 @@ std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<in
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
   std::mutex error_mutex;
+  const int n = std::max(1, std::min<int>(threads, int(channels.size())));
+  if (int(engines_.size()) < n) engines_.resize(std::size_t(n));
+  std::string key = engine + (options.snap ? " snap" : "");
+  for (const auto& [k, v] : options.params) key += " " + k + "=" + v;
+  for (int i = 0; i < n; ++i) {
+    EngineSlot& slot = engines_[std::size_t(i)];
+    if (!slot.engine || slot.name != key) slot = {key, make_engine(engine, options)};
+  }
+  std::atomic<int> next_slot{0};
   auto worker = [&] {
     try {
-      auto eng = make_engine(engine, options);
+      RasterEngine* eng = engines_[std::size_t(next_slot++)].engine.get();
       for (std::size_t k; (k = next++) < channels.size();) {
         ChannelOutput& co = out[k];
         co.channel = channels[k];
@@ -61,7 +70,6 @@ std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<in
       if (!error) error = std::current_exception();
     }
   };
-  const int n = std::max(1, std::min<int>(threads, int(channels.size())));
   std::vector<std::thread> pool;
   for (int i = 1; i < n; ++i) pool.emplace_back(worker);
   worker();

@@ -3,6 +3,7 @@
 // stage did and took.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,13 @@ class ScenePipeline {
  private:
   const Scene& scene_;
   WorldDatabase db_;
+  // Engines kept across frames, one per worker (engines hold multi-megabyte memories, and the
+  // segment processor's frame memory alternates banks from frame to frame).
+  struct EngineSlot {
+    std::string name;
+    std::unique_ptr<RasterEngine> engine;
+  };
+  mutable std::vector<EngineSlot> engines_;
 };
 
 }  // namespace cig

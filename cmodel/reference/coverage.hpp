@@ -30,6 +30,7 @@ struct EdgeEquation {
 struct CoverageSetup {
   int n = 0;
   double x[kMaxScreenVertices], y[kMaxScreenVertices];  // sample coordinates
+  int src[kMaxScreenVertices];                          // index of each vertex in the input
   EdgeEquation edge[kMaxScreenVertices];
   double ymin = 0, ymax = 0;
   bool empty = true;  // zero area: covers nothing
@@ -69,8 +70,20 @@ struct CoverageSetup {
 };
 
 // Builds the edge equations from vertices in sample coordinates. Zero-area polygons are empty.
-inline CoverageSetup setup_coverage(const double* xs, const double* ys, int n) {
+// Repeated consecutive vertices (snapping can merge two) are dropped: a zero-length edge has
+// C = 0 everywhere and would otherwise reject every sample.
+inline CoverageSetup setup_coverage(const double* in_x, const double* in_y, int in_n) {
   CoverageSetup s;
+  double xs[kMaxScreenVertices], ys[kMaxScreenVertices];
+  int n = 0;
+  for (int k = 0; k < in_n && k < kMaxScreenVertices; ++k) {
+    if (n > 0 && in_x[k] == xs[n - 1] && in_y[k] == ys[n - 1]) continue;
+    xs[n] = in_x[k];
+    ys[n] = in_y[k];
+    s.src[n] = k;
+    ++n;
+  }
+  while (n > 1 && xs[n - 1] == xs[0] && ys[n - 1] == ys[0]) --n;
   s.n = n;
   double area2 = 0;
   for (int k = 0; k < n; ++k) {

@@ -38,7 +38,7 @@ DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
     double a = std::abs((c.x[i1] - c.x[0]) * (c.y[k] - c.y[0]) - (c.y[i1] - c.y[0]) * (c.x[k] - c.x[0]));
     if (a > best) { best = a; i2 = k; }
   }
-  auto w = [&](int k) { return 1.0 / p.vertices[std::size_t(k)].zs; };
+  auto w = [&](int k) { return 1.0 / p.vertices[std::size_t(c.src[k])].zs; };
   const double ux = c.x[i1] - c.x[0], uy = c.y[i1] - c.y[0];
   const double vx = c.x[i2] - c.x[0], vy = c.y[i2] - c.y[0];
   const double du = w(i1) - w(0), dv = w(i2) - w(0);
@@ -55,7 +55,7 @@ DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
 // edge contributes its nearer endpoint).
 double edge_intensity(const CoverageSetup& c, const ScreenPolygon& p, int k, double y, double x) {
   const int k1 = (k + 1) % c.n;
-  const double i0 = p.vertices[std::size_t(k)].is, i1 = p.vertices[std::size_t(k1)].is;
+  const double i0 = p.vertices[std::size_t(c.src[k])].is, i1 = p.vertices[std::size_t(c.src[k1])].is;
   if (c.y[k] == c.y[k1]) return std::abs(x - c.x[k]) <= std::abs(x - c.x[k1]) ? i0 : i1;
   const double t = (y - c.y[k]) / (c.y[k1] - c.y[k]);
   return i0 + t * (i1 - i0);
@@ -105,7 +105,21 @@ struct StripBins {
 
 }  // namespace
 
-RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats) {
+namespace {
+
+RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats);
+
+}  // namespace
+
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats) { return render(frame, frame, stats); }
+
+RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats) {
+  return render(snap_to_formatter_grid(exact), exact, stats);
+}
+
+namespace {
+
+RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats) {
   auto t0 = Clock::now();
   double resolve_ms = 0;
   const SampleLattice lattice{frame.raster};
@@ -158,7 +172,9 @@ RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats) {
       const ScreenPolygon& p = frame.polygons[pi];
       const CoverageSetup cov = setup_coverage(p, lattice);
       if (cov.empty) continue;
-      const DepthPlane dp = fit_depth_plane(cov, p);
+      const DepthPlane dp = &depth_source == &frame
+                                ? fit_depth_plane(cov, p)
+                                : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), p);
       double il = 0, slope = 0, xl = 0;  // intensity along the current row: il + slope*(x - xl)
       const std::int32_t id = std::int32_t(pi);
       for_each_covered_sample(
@@ -259,5 +275,7 @@ RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats) {
   stats.raster_ms += ms_since(t0) - resolve_ms;
   return out;
 }
+
+}  // namespace
 
 }  // namespace cig

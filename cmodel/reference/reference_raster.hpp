@@ -4,7 +4,7 @@
 //    watertight edge tests with the top-left tie rule (coverage.hpp);
 //  * visibility: z-buffer in double on w = 1/Zs, which is exactly affine in screen space for a
 //    planar polygon (so depth is perspective-correct); equal depths go to the polygon earlier in
-//    the priority list;
+//    the priority list; the snapped variant keeps the exact depth planes;
 //  * intensity: Gouraud as the seed defines it (eq. 3): along the left and right edges by Y, then
 //    linearly along the row; colour = polygon colour x I;
 //  * fog: linear in eye depth between fog start and end, towards the fog colour;
@@ -36,5 +36,12 @@ struct RasterImage {
 };
 
 RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats);
+
+// The snapped reference: coverage (and Gouraud) from the vertices snapped to the formatter grid,
+// depth from the exact vertices of `exact` (the same polygons unsnapped). Snapping X and Y while
+// keeping each vertex's Z would tilt the 1/Z plane of every polygon by a different amount, so
+// near-coplanar surfaces (a marking 5 cm above a runway) would z-fight; the depth of a point of a
+// polygon does not depend on where the formatter rounds its vertices.
+RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats);
 
 }  // namespace cig

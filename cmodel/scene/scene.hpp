@@ -57,6 +57,11 @@ struct Pose {
 struct Object {
   std::string name;
   Pose pose;
+  // Priority class: the scene manager orders visible objects by layer (higher first) and within a
+  // layer by distance. Surfaces everything stands on (terrain, runways) go below the objects on
+  // them, the sky below everything, because an object's centre distance alone cannot order a
+  // building before the ground polygon that extends behind it.
+  int layer = 0;
   std::vector<Subobject> subobjects;
   std::vector<LightPoint> light_points;
   glm::dvec3 sphere_centre{0};  // object coordinates

@@ -136,10 +136,11 @@ LightPoint read_light_point(const JsonNode& n) {
 }
 
 Object read_object(const JsonNode& n, const std::string& scene_file) {
-  n.allow_only({"name", "position", "heading", "pitch", "roll", "bounding_sphere", "subobjects",
+  n.allow_only({"name", "position", "heading", "pitch", "roll", "layer", "bounding_sphere", "subobjects",
                 "light_points"});
   Object o;
   if (auto nm = n.find("name")) o.name = nm->string();
+  if (auto l = n.find("layer")) o.layer = int(l->integer(-8, 8));
   if (n.has("position")) o.pose = read_pose(n);
   else {
     o.pose.heading_deg = n.number_or("heading", 0);

@@ -79,6 +79,7 @@ WorldDatabase build_world_database(const Scene& scene) {
     for (const auto& l : o.light_points) w.light_positions.push_back(rot * l.position + o.pose.position);
     w.centre = rot * o.sphere_centre + o.pose.position;
     w.radius = o.sphere_radius;
+    w.layer = o.layer;
     db.objects.push_back(std::move(w));
   }
   return db;

@@ -29,6 +29,7 @@ struct WorldObject {
   std::vector<glm::dvec3> light_positions;  // world
   glm::dvec3 centre{0};
   double radius = 0;
+  int layer = 0;
 };
 
 struct WorldDatabase {

@@ -1,0 +1,109 @@
+// Pieces shared by the cig commands.
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "common/error.hpp"
+#include "engine/engine.hpp"
+#include <cctype>
+
+namespace cig::cli {
+
+using Clock = std::chrono::steady_clock;
+inline double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+struct EngineArgs {
+  std::string engine = "float";
+  std::vector<std::string> opts;
+  bool snap = false;
+
+  void add_to(CLI::App* app) {
+    app->add_option("--engine", engine, "raster engine (" + [] {
+      std::string s;
+      for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
+      return s;
+    }() + ")");
+    app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
+    app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
+  }
+  EngineOptions options() const {
+    EngineOptions o;
+    o.snap = snap;
+    for (const auto& kv : opts) {
+      auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw InputError("", "--engine-opt", "'" + kv + "' is not of the form KEY=VALUE");
+      o.params[kv.substr(0, eq)] = kv.substr(eq + 1);
+    }
+    make_engine(engine, o);  // validates the name and the options before any work
+    return o;
+  }
+};
+
+// "A:B" (inclusive) or "K".
+inline void parse_frames(const std::string& text, int& a, int& b) {
+  auto bad = [&] { throw InputError("", "--frames", "'" + text + "' is not of the form A:B (inclusive, A <= B)"); };
+  auto colon = text.find(':');
+  try {
+    std::size_t used = 0;
+    if (colon == std::string::npos) {
+      a = b = std::stoi(text, &used);
+      if (used != text.size()) bad();
+    } else {
+      a = std::stoi(text.substr(0, colon), &used);
+      if (used != colon) bad();
+      b = std::stoi(text.substr(colon + 1), &used);
+      if (used != text.size() - colon - 1) bad();
+    }
+  } catch (const std::logic_error&) {
+    bad();
+  }
+  if (a < 0 || b < a) bad();
+}
+
+inline std::string frame_name(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "frame_%04d", frame);
+  return buf;
+}
+
+inline std::string safe_name(const std::string& s) {
+  std::string r;
+  for (char c : s) r += (std::isalnum((unsigned char)c) || c == '-' || c == '_') ? c : '_';
+  return r;
+}
+
+
+// The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.
+inline void frame_range(const std::string& frames_text, int frame_k, bool frame_given, int frame_count,
+                        const std::string& scene_file, int& a, int& b) {
+  a = b = 0;
+  if (!frames_text.empty()) parse_frames(frames_text, a, b);
+  else if (frame_k >= 0) a = b = frame_k;
+  else if (frame_given) throw InputError("", "--frame", "frame must not be negative");
+  const int last = frame_count - 1;
+  if (b > last)
+    throw InputError(scene_file, "observer.keyframes",
+                     "frame " + std::to_string(b) + " lies outside the observer path (frames 0.." +
+                         std::to_string(last) + ")");
+}
+
+// `cig compare` (compare_command.cpp).
+struct CompareCommand {
+  CLI::App* sub = nullptr;
+  std::string input, out_dir, report_file, frames_text, reference = "float";
+  int frame_k = -1, channel = -1;
+  CLI::Option* frame_opt = nullptr;
+  EngineArgs engine;
+  void add_to(CLI::App& app);
+  int run();
+};
+
+}  // namespace cig::cli

@@ -1,0 +1,53 @@
+#include "image/image_compare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace cig {
+
+double ImageError::psnr() const {
+  const double m = mse();
+  return m == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / m);
+}
+
+void ImageError::add(const ImageError& e) {
+  pixels += e.pixels;
+  sum_squared += e.sum_squared;
+  for (int c = 0; c < 3; ++c) max_abs[c] = std::max(max_abs[c], e.max_abs[c]);
+  pixels_over_2lsb += e.pixels_over_2lsb;
+}
+
+ImageError compare_images(const Image& got, const Image& reference) {
+  if (got.width != reference.width || got.height != reference.height)
+    throw std::runtime_error("compare: images differ in size");
+  ImageError e;
+  e.pixels = long(got.width) * long(got.height);
+  for (std::size_t p = 0; p < std::size_t(e.pixels); ++p) {
+    bool over = false;
+    for (int c = 0; c < 3; ++c) {
+      const int d = std::abs(int(got.rgb[3 * p + std::size_t(c)]) - int(reference.rgb[3 * p + std::size_t(c)]));
+      e.sum_squared += double(d) * d;
+      e.max_abs[c] = std::max(e.max_abs[c], d);
+      over = over || d > 2;
+    }
+    e.pixels_over_2lsb += over;
+  }
+  return e;
+}
+
+Image difference_image(const Image& got, const Image& reference, int gain) {
+  Image d(got.width, got.height);
+  for (std::size_t i = 0; i < d.rgb.size(); ++i)
+    d.rgb[i] = std::uint8_t(std::min(255, gain * std::abs(int(got.rgb[i]) - int(reference.rgb[i]))));
+  return d;
+}
+
+long differing_ids(const IdBuffer& got, const IdBuffer& reference) {
+  long n = 0;
+  for (std::size_t i = 0; i < got.id.size() && i < reference.id.size(); ++i) n += got.id[i] != reference.id[i];
+  return n;
+}
+
+}  // namespace cig

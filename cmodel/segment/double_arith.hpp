@@ -1,0 +1,82 @@
+// The double-precision twin of the segment processor's arithmetic: the policy that, plugged into
+// the hls/segment kernels, turns each of them into its twin (the same algorithm, no
+// quantization). Values keep the fixed policy's units: grid units for X and Y, 0..255 for levels,
+// metres for Z, output LSB for samples. Integer decisions (rows, columns, area codes) follow the
+// same rules on the unrounded values.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "hls/segment/segment_arith.hpp"
+
+namespace cig {
+
+struct DoubleSegmentArith {
+  using RowGeometry = hls::RowGeometry;
+  using Coord = double;
+  using Diameter = double;
+  using Level = double;
+  using Depth = double;
+  using Area = double;
+  using X = double;
+  using Slope = double;
+  using Intensity = double;
+  using Sample = double;
+  using FogFactor = double;
+  struct FogTable {
+    double start = 1e30, end = 2e30;
+  };
+
+  static double row_y(const RowGeometry& g, int k) { return 0.5 * g.row_half(k); }
+  static double spacing(const RowGeometry& g) { return std::ldexp(1.0, g.log2_half_spacing - 1); }
+  static int first_row_at_or_after(const RowGeometry& g, double y) {
+    return int(std::ceil((2 * y - g.offset_half) / std::ldexp(1.0, g.log2_half_spacing)));
+  }
+  static double area_term(double x0, double y0, double x1, double y1) { return (y1 - y0) * (x1 + x0); }
+  static double area_sub(double a, double t) { return a - t; }
+  static bool is_zero(double a) { return a == 0; }
+  static bool is_positive(double a) { return a > 0; }
+  static int area_code(double twice) {
+    const double m = std::abs(twice);
+    if (m < 1) return 15;
+    const int msb = int(std::floor(std::log2(m)));
+    return std::clamp(21 - msb, 1, 15);
+  }
+  static double slope_per_row(const RowGeometry& g, double xa, double ya, double xb, double yb) {
+    return (xb - xa) / (yb - ya) * spacing(g);
+  }
+  static double crossing(const RowGeometry& g, double xa, double ya, double xb, double yb, int k) {
+    return xa + (row_y(g, k) - ya) * (xb - xa) / (yb - ya);
+  }
+  static double step(double x, double s, int rows) { return x + rows * s; }
+  static double lerp_x(double x0, double x1, int num, int den) { return x0 + (x1 - x0) * num / den; }
+  static double intensity_at(double ib, double ie, double yb, double ye, int yt_quarter) {
+    return std::clamp(ib + (ie - ib) * (0.25 * yt_quarter - yb) / (ye - yb), 0.0, 255.0);
+  }
+  static double depth_at(double zb, double ze, double yb, double ye, int yt_quarter) {
+    return std::max(1e-30, zb + (ze - zb) * (0.25 * yt_quarter - yb) / (ye - yb));
+  }
+  static double column_x(const RowGeometry& g, int i) { return 0.5 * g.row_half(i); }
+  static double midpoint(double a, double b) { return 0.5 * (a + b); }
+  static double lerp_intensity(double il, double ir, double num, double den) {
+    if (!(den > 0) || !(num > 0)) return il;
+    if (!(num < den)) return ir;
+    return il + (ir - il) * num / den;
+  }
+  static double lerp_depth(double zl, double zr, double num, double den) { return lerp_intensity(zl, zr, num, den); }
+  static double fog_factor(const FogTable& t, double z) { return std::clamp((z - t.start) / (t.end - t.start), 0.0, 1.0); }
+  static double shade(double c, double i) { return c * i / 256.0; }
+  static double mix(double s, double fog, double f) { return s * (1 - f) + fog * f; }
+  static double level_sample(double c) { return c; }
+  static hls::UInt<8> resolve(const double (&s)[16]) {
+    double sum = 0;
+    for (double v : s) sum += v;
+    return hls::UInt<8>(int(std::lround(std::clamp(sum / 16.0, 0.0, 255.0))));
+  }
+  static int first_column_at_or_after(const RowGeometry& g, double x) {
+    return int(std::ceil((2 * x - g.offset_half) / std::ldexp(1.0, g.log2_half_spacing)));
+  }
+};
+
+}  // namespace cig

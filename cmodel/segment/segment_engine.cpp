@@ -1,0 +1,318 @@
+#include "segment/segment_engine.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+#include "common/error.hpp"
+#include "hls/formatter/formatter.hpp"
+#include "hls/segment/edge_generator.hpp"
+#include "hls/segment/frame_memory.hpp"
+#include "hls/segment/light_segments.hpp"
+#include "hls/segment/segment_generator.hpp"
+#include "hls/segment/video_channel.hpp"
+#include "segment/double_arith.hpp"
+#include "segment/formatter_twin.hpp"
+
+namespace cig {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// Seed 001 timings, for the report's estimate of the segment processor's time per frame.
+constexpr double kEdgeFormationUs = 10.0;  // per edge, at most
+constexpr double kSegmentWriteNs = 400.0;
+constexpr double kSegmentReadNs = 200.0;
+
+// ---- Formatting: the bit-accurate formatter kernel, or its twin ---------------------------------
+
+template <class P>
+struct Front;
+
+template <class Fmt>
+struct Front<hls::FixedSegmentArith<Fmt>> {
+  using P = hls::FixedSegmentArith<Fmt>;
+  static hls::FormattedPrimitive polygon(const ScreenPolygon& p, std::uint16_t id) {
+    hls::FormattedPrimitive out;
+    hls::formatter_top(raw_from_polygon(p, id), out);
+    return out;
+  }
+  static hls::FormattedPrimitive light(const ScreenLightPoint& l, std::uint16_t id) {
+    hls::FormattedPrimitive out;
+    hls::formatter_top(raw_from_light(l, id), out);
+    return out;
+  }
+  static int light_segments(const hls::FormattedPrimitive& l, int log2, hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
+    return hls::generate_light_segments<P>(l, log2, hls::UInt<3>(0), out);
+  }
+  static typename P::Level level(double unit) { return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255))); }
+  static void fog_table(typename P::FogTable& t, const Fog& fog) {
+    for (int code = 0; code < (1 << 15); ++code) {
+      hls::ZFloat z;
+      z.bits = hls::UInt<15>(code);
+      const double f = std::clamp((zfloat_to_double(z) - fog.start) / (fog.end - fog.start), 0.0, 1.0);
+      t.f[code] = typename P::FogFactor(hls::UFixed<9, 1>::from_raw_value(std::uint64_t(std::lround(f * 256))));
+    }
+  }
+};
+
+template <>
+struct Front<DoubleSegmentArith> {
+  using P = DoubleSegmentArith;
+  static hls::FormattedPrimitiveT<P> convert(const TwinPrimitive& t) {
+    hls::FormattedPrimitiveT<P> out;
+    out.is_light = t.is_light;
+    out.n = hls::UInt<5>(t.n);
+    for (int k = 0; k < t.n; ++k) out.v[k] = {t.v[k].x, t.v[k].y, t.v[k].i, t.v[k].z};
+    out.d = t.d;
+    for (int c = 0; c < 3; ++c) out.colour[c] = t.colour[c];
+    out.opaque = t.opaque;
+    out.protect = t.protect;
+    out.id = hls::UInt<16>(t.id);
+    return out;
+  }
+  static hls::FormattedPrimitiveT<P> polygon(const ScreenPolygon& p, std::uint16_t id) { return convert(formatter_twin(p, id)); }
+  static hls::FormattedPrimitiveT<P> light(const ScreenLightPoint& l, std::uint16_t id) { return convert(formatter_twin(l, id)); }
+  // The twin of the coding table: the exact chord of the disc of diameter D at each row.
+  static int light_segments(const hls::FormattedPrimitiveT<P>& l, int log2, hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
+    const hls::RowGeometry g = hls::RowGeometry::for_raster(log2);
+    const int rows = hls::kRowsPerLine << log2;
+    const double cx = l.v[0].x, cy = l.v[0].y, d = l.d;  // half units: radius D/2 grid = D half
+    int count = 0;
+    for (int row = std::max(0, P::first_row_at_or_after(g, cy - 0.5 * d)); row < rows && count < hls::kMaxLightSegments; ++row) {
+      const double dy = g.row_half(row) - 2 * cy;
+      if (std::abs(dy) > d) break;
+      const double w = std::sqrt(d * d - dy * dy);
+      hls::Segment<P>& s = out[count++];
+      s.line = hls::UInt<10>(row >> 2);
+      s.type = hls::UInt<3>(hls::kSegWhole);
+      s.row_first = s.row_last = hls::UInt<2>(row & 3);
+      s.xl[row & 3] = cx - 0.5 * w;
+      s.xr[row & 3] = cx + 0.5 * w + 1e-9;  // the disc's edge is inclusive
+      s.il = s.ir = l.v[0].i;
+      s.zl = s.zr = l.v[0].z;
+      s.source = l.id;
+      s.is_light = true;
+      s.opaque = true;
+    }
+    return count;
+  }
+  static double level(double unit) { return std::clamp(unit, 0.0, 1.0) * 255; }
+  static void fog_table(P::FogTable& t, const Fog& fog) {
+    t.start = fog.start;
+    t.end = fog.end;
+  }
+};
+
+// ---- The pipeline ----------------------------------------------------------------------------------
+
+template <class P>
+class SegmentPipeline {
+ public:
+  SegmentPipeline()
+      : frame_memory_(std::make_unique<hls::FrameMemory<P>>()),
+        segment_memory_(std::make_unique<hls::SegmentMemory<P>>()),
+        tables_(std::make_unique<hls::VideoTables<P>>()),
+        line_(std::make_unique<hls::LineBuffer<P>>()),
+        segments_(std::make_unique<hls::Segment<P>[]>(hls::kMaxLines)) {}
+
+  explicit SegmentPipeline(bool seed_quadrilateral) : SegmentPipeline() { seed_quadrilateral_ = seed_quadrilateral; }
+
+  EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
+    using F = Front<P>;
+    const int n = frame.raster;
+    const int log2 = int(std::lround(std::log2(n)));
+    if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2)
+      throw InputError("", "raster", "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
+    if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) || frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
+      throw InputError("", "polygons", "the segment engine takes at most 65536 polygons and 65536 light points per channel");
+    EngineRun run;
+    auto& rep = run.report;
+    rep["engine"] = engine_name;
+    rep["format"] = format_name;
+    rep["seed_quadrilateral"] = seed_quadrilateral_;
+
+    // Formatter and edge generator: polygons into the frame memory, segments counted per area code.
+    auto t0 = Clock::now();
+    hls::frame_memory_swap(*frame_memory_);
+    const int bank = frame_memory_->write_bank;
+    hls::OverloadCounts counts;
+    hls::overload_reset(counts);
+    hls::PolygonEdges<P> edges;
+    long degenerate = 0, edges_stored = 0, protected_polygons = 0;
+    for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
+      const auto fp = F::polygon(frame.polygons[pi], std::uint16_t(pi));
+      for (int c = 0; c < 3; ++c) tables_->polygon_colour[pi][c] = fp.colour[c];
+      hls::generate_edges<P>(fp, log2, edges);
+      if (!edges.valid) {
+        ++degenerate;
+        continue;
+      }
+      if (!hls::frame_memory_write(edges, *frame_memory_)) continue;
+      hls::overload_count(edges.h, counts);
+      edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
+      protected_polygons += edges.h.protect ? 1 : 0;
+    }
+    const int threshold = hls::overload_threshold_top(counts, hls::kSegmentBankWords);
+    const double front_ms = ms_since(t0);
+
+    // Preprocessor + segment generator + light coding table, into the Y sorter in priority order.
+    t0 = Clock::now();
+    hls::y_sorter_reset(*segment_memory_, n);
+    std::vector<std::size_t> light_order(frame.light_points.size());
+    std::iota(light_order.begin(), light_order.end(), 0);
+    std::stable_sort(light_order.begin(), light_order.end(), [&](std::size_t a, std::size_t b) {
+      return frame.light_points[a].priority < frame.light_points[b].priority;
+    });
+    std::size_t next_light = 0;
+    long light_segments = 0, polygon_segments = 0, dropped_overload = 0;
+    long dropped_by_code[hls::kAreaCodes] = {};
+    hls::Segment<P> light_out[hls::kMaxLightSegments];
+    auto emit_lights_before = [&](long priority) {
+      for (; next_light < light_order.size() && frame.light_points[light_order[next_light]].priority <= priority; ++next_light) {
+        const std::size_t li = light_order[next_light];
+        const auto fl = F::light(frame.light_points[li], std::uint16_t(li));
+        for (int c = 0; c < 3; ++c) tables_->light_colour[li][c] = fl.colour[c];
+        const int k = F::light_segments(fl, log2, light_out);
+        for (int s = 0; s < k; ++s) hls::y_sort(light_out[s], *segment_memory_);
+        light_segments += k;
+      }
+    };
+    int addr = 0;
+    while (hls::frame_memory_read(*frame_memory_, bank, addr, edges)) {
+      emit_lights_before(long(edges.h.id.value()));
+      const int code = int(edges.h.area_code.value());
+      if (code > threshold) {
+        ++dropped_overload;
+        ++dropped_by_code[code];
+        continue;
+      }
+      hls::Segment<P>(&out)[hls::kMaxLines] = *reinterpret_cast<hls::Segment<P>(*)[hls::kMaxLines]>(segments_.get());
+      const int k = hls::generate_segments<P>(edges, log2, hls::UInt<3>(std::uint64_t(frame.channel & 7)),
+                                              seed_quadrilateral_, out);
+      for (int s = 0; s < k; ++s) hls::y_sort(out[s], *segment_memory_);
+      polygon_segments += k;
+    }
+    emit_lights_before(long(frame.polygons.size()));
+    const double middle_ms = ms_since(t0);
+
+    // Video channel, line by line.
+    t0 = Clock::now();
+    F::fog_table(tables_->fog, frame.fog);
+    for (int c = 0; c < 3; ++c) {
+      tables_->fog_colour[c] = F::level(frame.fog.colour[c]);
+      tables_->background[c] = F::level(frame.background[c]);
+    }
+    run.out.image = Image(n, n);
+    run.out.ids = IdBuffer(n, n);
+    hls::PixelLine pixels;
+    long read = 0, max_per_line = 0;
+    for (int line = 0; line < n; ++line) {
+      read += hls::render_line(line, log2, *segment_memory_, *tables_, *line_, pixels);
+      max_per_line = std::max<long>(max_per_line, long(segment_memory_->count[line].value()));
+      for (int px = 0; px < n; ++px) {
+        std::uint8_t* dst = run.out.image.at(px, line);
+        for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(pixels.rgb[px][c].value());
+        run.out.ids.id[std::size_t(line) * std::size_t(n) + std::size_t(px)] = pixels.id[px];
+      }
+    }
+    const double video_ms = ms_since(t0);
+
+    const long stored = segment_memory_->used[0] + segment_memory_->used[1];
+    const long lost = long(segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value());
+    rep["polygons"] = frame.polygons.size();
+    rep["polygons_degenerate"] = degenerate;
+    rep["polygons_protected"] = protected_polygons;
+    rep["edges"] = edges_stored;
+    rep["frame_memory"] = {{"bank_words", hls::kFrameBankWords},
+                           {"words_used", frame_memory_->used[bank]},
+                           {"polygons_written", frame_memory_->polygons_written.value()},
+                           {"polygons_overflowed", frame_memory_->polygons_overflowed.value()}};
+    nlohmann::ordered_json per_code = nlohmann::ordered_json::array();
+    for (int c = 0; c < hls::kAreaCodes; ++c)
+      per_code.push_back({{"code", c},
+                          {"segments_even", counts.segments[0][c].value()},
+                          {"segments_odd", counts.segments[1][c].value()},
+                          {"polygons_dropped", dropped_by_code[c]}});
+    rep["overload"] = {{"bank_capacity", hls::kSegmentBankWords},
+                       {"threshold", threshold},
+                       {"polygons_dropped", dropped_overload},
+                       {"per_area_code", per_code}};
+    rep["segments"] = {{"polygon", polygon_segments},
+                       {"light", light_segments},
+                       {"stored_even", segment_memory_->used[0]},
+                       {"stored_odd", segment_memory_->used[1]},
+                       {"dropped_memory_full", lost},
+                       {"per_line_max", max_per_line},
+                       {"per_line_mean", n ? double(stored) / n : 0.0},
+                       {"read_by_video", read}};
+    rep["light_points"] = frame.light_points.size();
+    // Seed timings: edge formation <= 10 us per edge, 400 ns per segment written, 200 ns read.
+    const double est_ms = (edges_stored * kEdgeFormationUs + stored * kSegmentWriteNs * 1e-3) * 1e-3;
+    rep["seed_timing"] = {{"segment_processor_ms", est_ms},
+                          {"video_read_ms", read * kSegmentReadNs * 1e-6},
+                          {"fits_40ms_frame", est_ms <= 40.0}};
+    rep["front_ms"] = front_ms;
+    rep["segments_ms"] = middle_ms;
+    rep["video_ms"] = video_ms;
+    return run;
+  }
+
+ private:
+  std::unique_ptr<hls::FrameMemory<P>> frame_memory_;
+  std::unique_ptr<hls::SegmentMemory<P>> segment_memory_;
+  std::unique_ptr<hls::VideoTables<P>> tables_;
+  std::unique_ptr<hls::LineBuffer<P>> line_;
+  std::unique_ptr<hls::Segment<P>[]> segments_;
+  bool seed_quadrilateral_ = false;
+};
+
+template <class P>
+class SegmentEngine : public RasterEngine {
+ public:
+  SegmentEngine(const char* name, const char* format, bool quad) : name_(name), format_(format), pipeline_(quad) {}
+  const char* name() const override { return name_; }
+  EngineRun render(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
+
+ private:
+  const char* name_;
+  const char* format_;
+  SegmentPipeline<P> pipeline_;
+};
+
+}  // namespace
+
+std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, bool twin) {
+  if (options.snap)
+    throw InputError("", "--snap", "--snap applies to the float engine; the segment engine's formatter snaps by itself");
+  std::string format = "fine";
+  bool quad = false;
+  const char* engine = twin ? "segment-double" : "segment";
+  for (const auto& [key, value] : options.params) {
+    if (key == "format" && !twin) {
+      format = value;
+    } else if (key == "x-rows") {
+      if (value != "4" && value != "2")
+        throw InputError("", "--engine-opt", "x-rows must be 4 (X at every sample row) or 2 (the seed's four-X segment)");
+      quad = value == "2";
+    } else {
+      throw InputError("", "--engine-opt", std::string("engine '") + engine + "' takes no option '" + key +
+                                               (twin ? "' (known: x-rows)" : "' (known: format, x-rows)"));
+    }
+  }
+  if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad);
+  if (format == "coarse")
+    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(engine, hls::SegmentFormatCoarse::name, quad);
+  if (format == "medium")
+    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(engine, hls::SegmentFormatMedium::name, quad);
+  if (format == "fine")
+    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(engine, hls::SegmentFormatFine::name, quad);
+  throw InputError("", "--engine-opt", "format '" + format + "' is not one of coarse, medium, fine");
+}
+
+}  // namespace cig

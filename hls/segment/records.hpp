@@ -1,0 +1,155 @@
+// Records of the segment processor (SPEC C-D, seed 001): what flows between its kernels and
+// what its memories hold. Every field has its width here; the kernels use only these records and
+// the type layer.
+//
+//   ScreenFrame (double) --cmodel--> RawPrimitive (IEEE binary64 bit patterns)
+//     formatter_top        -> FormattedPrimitive   (eq. 1: X, Y 12 bits, I 8, D 3, Z e8m7)
+//     edge_generator_top   -> PolygonEdges         (left/right chains, slopes eq. 2, area eq. 5-6,
+//                                                   area code, segment counts per field)
+//     frame memory (2 banks x 16K words; headers and edges)     overload threshold (eq. 6 codes)
+//     segment_generator_top-> Segment per raster line (4 X values, type, I and Z at the ends,
+//                                                   eq. 3-4)
+//     light_segments_top   -> Segment per sample row of a light point (coding table)
+//     y_sorter_top         -> per-line linked lists in segment memory (2 banks x 48K: even and
+//                             odd lines), head pointers, counts
+//     video_channel_top    -> pixels of one line (I and Z along the segment, colour x I, fog by
+//                             Z, priority, 4 x 4 sub-pixel coverage)
+//
+// Geometry conventions (the same as the float reference, cmodel/reference/sample_lattice.hpp):
+// grid units X, Y in 0..4095; raster N = 2^n lines of u = 4096/N units; line L spans
+// [u*L - 1, u*L - 1 + u); its 4 sample rows r = 0..3 lie at Y = u*L - 1 + (2r + 1)*u/8, i.e. at
+// 8L + 2r for N = 512. Sample rows are numbered globally 0..4N-1 (row = 4L + r). Positions on
+// the sample lattice are kept in *half units* (2 * grid units), which represents every sample
+// position exactly for N <= 1024; the segment processor supports 16 <= N <= 1024.
+#pragma once
+
+#include "hls/types/fixed.hpp"
+#include "hls/types/zfloat.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+constexpr int kMaxVertices = 16;        // per polygon, after clipping (cmodel kMaxScreenVertices)
+constexpr int kMaxRasterLog2 = 10;      // N <= 1024
+constexpr int kMinRasterLog2 = 4;       // N >= 16
+constexpr int kMaxLines = 1 << kMaxRasterLog2;
+constexpr int kRowsPerLine = 4;         // sample rows per raster line (4 x 4 samples per pixel)
+constexpr int kMaxRows = kMaxLines * kRowsPerLine;
+constexpr int kMaxEdgesPerChain = kMaxVertices;  // a chain can hold every edge of the polygon
+constexpr int kMaxPolygonIds = 1 << 16;          // polygons (and lights) per channel and frame
+
+// ---- Formatter input: the geometric processor's floating-point values -------------------------
+// Every real is an IEEE-754 binary64 bit pattern (the seed's processor sends 38-bit reals; binary64
+// keeps the fixed-point path equal, bit for bit, to the float reference's snapped positions).
+struct RawVertex {
+  UInt<64> xs, ys, zs, is;  // Xs, Ys in [-1, 1], Zs > 0, Is in [0, 1]
+};
+
+struct RawPrimitive {
+  bool is_light = false;
+  UInt<5> n;                    // vertices (polygon: 3..16; light: the centre is v[0])
+  RawVertex v[kMaxVertices];
+  UInt<64> ds;                  // light diameter Ds in [0, 1]
+  UInt<64> colour[3];           // R, G, B in [0, 1]
+  bool opaque = true, protect = false;
+  UInt<16> id;                  // index in the frame's polygon (or light) list
+};
+
+// ---- Formatter output (eq. 1) -----------------------------------------------------------------
+// Templated on the arithmetic policy P (segment_arith.hpp): the bit-accurate policy has
+// Coord = UInt<12> (grid units 0..4095), Level = UInt<8> (0..255), Depth = ZFloat (e8m7); the
+// C model's double twin has doubles in the same units, unrounded.
+template <class P>
+struct FormattedVertexT {
+  typename P::Coord x, y;
+  typename P::Level i;
+  typename P::Depth z;
+};
+
+template <class P>
+struct FormattedPrimitiveT {
+  bool is_light = false;
+  UInt<5> n;
+  FormattedVertexT<P> v[kMaxVertices];
+  typename P::Diameter d;          // light diameter, grid units 0..7
+  typename P::Level colour[3];     // 0..255
+  bool opaque = true, protect = false;
+  UInt<16> id;
+};
+
+// The formatter's own output types (eq. 1 widths).
+struct FormatterTypes {
+  using Coord = UInt<12>;
+  using Diameter = UInt<3>;
+  using Level = UInt<8>;
+  using Depth = ZFloat;
+};
+using FormattedVertex = FormattedVertexT<FormatterTypes>;
+using FormattedPrimitive = FormattedPrimitiveT<FormatterTypes>;
+
+// ---- Edge generator output / frame memory contents ----------------------------------------------
+// One edge of a left or right chain, as the preprocessor needs it: the sample rows it spans, its
+// endpoints (for I and Z by eq. 3-4), the slope of eq. 2 per sample row and its first crossing.
+template <class P>
+struct Edge {
+  int row_first = 0, row_last = -1;  // global sample rows whose Y lies in [y_begin, y_end) (< 4096)
+  typename P::Coord x_begin, y_begin, x_end, y_end;
+  typename P::Level i_begin, i_end;
+  typename P::Depth z_begin, z_end;
+  typename P::Slope dx_per_row;      // eq. 2 times the sample-row spacing
+  typename P::X x_first;             // X at row_first (the preprocessor's first crossing)
+};
+
+// Area codes of eq. 6: 0 protected, 1 (largest) .. 15 (smallest).
+constexpr int kAreaCodes = 16;
+
+// The polygon header word of the frame memory.
+template <class P>
+struct PolygonHeader {
+  UInt<16> id;
+  typename P::Level colour[3];
+  bool opaque = true, protect = false;
+  UInt<4> area_code;
+  typename P::Area twice_area;       // eq. 6 without the 1/2, grid units^2; sign = orientation
+  int row_first = 0, row_last = -1;  // sample rows covered by the polygon
+  UInt<11> segments_even, segments_odd;  // raster lines crossed, by field (for overload)
+  UInt<5> left_count, right_count;
+};
+
+template <class P>
+struct PolygonEdges {
+  bool valid = false;                // false: no sample row crosses it (degenerate): dropped
+  PolygonHeader<P> h;
+  Edge<P> left[kMaxEdgesPerChain];   // top to bottom
+  Edge<P> right[kMaxEdgesPerChain];
+};
+
+// Frame-memory words a polygon takes: one header plus one per stored edge.
+template <class P>
+inline int frame_memory_words(const PolygonEdges<P>& e) {
+  return 1 + int(e.h.left_count.value()) + int(e.h.right_count.value());
+}
+
+// ---- Segments ---------------------------------------------------------------------------------
+// Segment types of the seed (Fig. 3), used by the anti-aliasing filter.
+constexpr unsigned kSegTop = 1, kSegBottom = 2, kSegMiddle = 3, kSegWhole = 4;
+
+template <class P>
+struct Segment {
+  UInt<10> line;                     // raster line 0..N-1
+  UInt<3> type;                      // kSegTop .. kSegWhole
+  UInt<2> row_first, row_last;       // covered sample rows within the line
+  // Left and right X at each of the line's 4 sample rows (rows outside row_first..row_last
+  // unused). The seed's segment carries four X values (left and right at the top and bottom of
+  // the line) and interpolates between them; where a chain vertex lies inside the line that
+  // misplaces the middle rows and opens cracks between neighbouring polygons, so the rows are
+  // stored exactly (SegmentOptions::seed_quadrilateral restores the seed's interpolation).
+  typename P::X xl[kRowsPerLine], xr[kRowsPerLine];
+  typename P::Intensity il, ir;      // eq. 3 at the ends, at the covered rows' centre
+  typename P::Depth zl, zr;          // eq. 4 at the ends
+  UInt<16> source;                   // polygon id, or light id when is_light
+  bool is_light = false;
+  bool opaque = true;
+  UInt<3> channel;
+};
+
+CIG_HLS_END_NAMESPACE

@@ -1,0 +1,217 @@
+// Arithmetic of the segment processor, as a policy: every kernel of hls/segment is a template
+// over it. FixedSegmentArith<Fmt> is the bit-accurate hardware arithmetic in the formats Fmt
+// names; the C model instantiates the same kernels with a double policy (cmodel/segment/
+// double_arith.hpp) to get each kernel's double-precision twin: the same algorithm, no
+// quantization.
+//
+// A policy provides the value types
+//   Coord      formatted X, Y (grid units)       fixed: UInt<12>         (eq. 1)
+//   Level      formatted I (0..255)               fixed: UInt<8>
+//   Depth      formatted Z                        fixed: ZFloat (e8m7)
+//   X          an edge's X at a sample row         Fmt::X
+//   Slope      X change per sample row (eq. 2)     Fmt::Slope
+//   Intensity  I at a segment end (eq. 3)          Fmt::Intensity
+// and the operations the kernels need (below). Integer quantities (rows, lines, counts, codes)
+// are plain ints in every policy: they are decisions, not values to quantize.
+#pragma once
+
+// hls-subset-helper: the arithmetic policy and format sets shared by every segment kernel.
+
+#include "hls/segment/records.hpp"
+#include "hls/segment/zfloat_ops.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+// Sample-row geometry (records.hpp): with u = 4096/N = 2^(12 - n), row k lies at
+// half-unit position H_k = (u/2)*k + u/4 - 2, i.e. Y_k = (H_k)/2 grid units.
+struct RowGeometry {
+  int log2_half_spacing;  // log2(u/2) = 11 - n: rows are 2^this half units apart
+  int offset_half;        // u/4 - 2
+  static RowGeometry for_raster(int raster_log2) {
+    RowGeometry g{11 - raster_log2, (1 << (10 - raster_log2)) - 2};
+    return g;
+  }
+  CIG_HLS_CONSTEXPR int row_half(int k) const { return (k << log2_half_spacing) + offset_half; }
+  // Rows with Y_k >= y, i.e. H_k >= 2y: the first is ceil((2y - offset) / 2^s).
+  CIG_HLS_CONSTEXPR int first_row_at_or_after_half(int y_half) const {
+    const int t = y_half - offset_half;
+    return t <= 0 ? -((-t) >> log2_half_spacing) : ((t + (1 << log2_half_spacing) - 1) >> log2_half_spacing);
+  }
+};
+
+template <class Fmt>
+struct FixedSegmentArith {
+  using Format = Fmt;
+  using Coord = UInt<12>;
+  using Diameter = UInt<3>;
+  using Level = UInt<8>;
+  using Depth = ZFloat;
+  using Area = Int<32>;  // twice the area, grid units^2: |.| <= 16 * 4095 * 8190 < 2^30
+  using X = typename Fmt::X;
+  using Slope = typename Fmt::Slope;
+  using Intensity = typename Fmt::Intensity;
+
+  static int coord_half(const Coord& c) { return int(c.value()) * 2; }
+
+  // Eq. 5-6: dY_j * sX_j = (Y_{j+1} - Y_j) * (X_{j+1} + X_j); twice the area is minus their sum.
+  static Area area_term(const Coord& x0, const Coord& y0, const Coord& x1, const Coord& y1) {
+    return Area((y1 - y0) * (x1 + x0));  // Int<13> * UInt<13> -> Int<27>, exact
+  }
+  static Area area_sub(const Area& a, const Area& t) { return wrap<32>(a - t); }
+  static bool is_zero(const Area& a) { return a.value() == 0; }
+  static bool is_positive(const Area& a) { return a.value() > 0; }
+  // Area code (eq. 6 bucket): one code per octave of area, smaller codes for larger polygons:
+  // area = |twice| / 2 units^2; code = clamp(20 - floor(log2(area)), 1, 15), so code 15 holds
+  // polygons under 64 units^2 (one pixel at N = 512) and code 1 those of 2^19 units^2 and more.
+  static int area_code(const Area& twice) {
+    const UInt<32> mag = UInt<32>(twice.value() < 0 ? -twice.value() : twice.value());
+    const int msb = leading_one(mag);  // floor(log2(twice)); the area's is one less
+    const int code = 21 - msb;  // 20 - (msb - 1)
+    return code < 1 ? 1 : code > 15 ? 15 : code;
+  }
+  // Ceiling and floor in half units are exact for integer grid coordinates.
+  static int first_row_at_or_after(const RowGeometry& g, const Coord& y) {
+    return g.first_row_at_or_after_half(coord_half(y));
+  }
+
+  // Eq. 2 per sample row: (xb - xa) / (yb - ya) * row spacing, rounded to Slope.
+  // Row spacing is 2^s half units = 2^(s-1) grid units; the quotient is taken on half units.
+  static Slope slope_per_row(const RowGeometry& g, const Coord& xa, const Coord& ya,
+                                               const Coord& xb, const Coord& yb) {
+    const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
+    const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));  // half units, > 0
+    const Int<26> num = Int<26>(dx.value() << g.log2_half_spacing);        // dx * spacing (half units)
+    return fixed_div<Slope>(Fixed<26, 26>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
+  }
+  // The preprocessor's crossing: X at row k on edge (xa, ya)-(xb, yb), one rounding (eq. 2 at a point).
+  static X crossing(const RowGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
+                                      const Coord& yb, int k) {
+    const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
+    const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));
+    const Int<15> t2 = Int<15>(g.row_half(k) - coord_half(ya));  // row's distance below ya, half units
+    const Int<29> num = dx * t2;
+    const X along = fixed_div<X>(Fixed<29, 29>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
+    return X(Fixed<13, 13>::from_raw(Int<13>(int(xa.value()))) + along);
+  }
+  // Incremental stepping: x + rows * slope, rounded to X (the accumulator is exact in hardware;
+  // rounding happens when the value leaves it).
+  static X step(const X& x, const Slope& s, int rows) {
+    return X(x + Fixed<13, 13>::from_raw(Int<13>(rows)) * s);
+  }
+  // Linear interpolation x0 + (x1 - x0) * num / den (den in 1..3: the video channel's rows).
+  static X lerp_x(const X& x0, const X& x1, int num, int den) {
+    const auto diff = x1 - x0;
+    const auto scaled = diff * Fixed<3, 3>::from_raw(Int<3>(num));
+    return X(x0 + fixed_div<X>(scaled, Fixed<3, 3>::from_raw(Int<3>(den))));
+  }
+
+  // Eq. 3: I at yt (half units) on an edge from (yb, ib) to (ye, ie), clamped to [0, 255].
+  static Intensity intensity_at(const Level& ib, const Level& ie, const Coord& yb,
+                                                  const Coord& ye, int yt_quarter) {
+    const Int<10> di = Int<10>(int(ie.value()) - int(ib.value()));
+    const Int<16> t4 = Int<16>(yt_quarter - 4 * int(yb.value()));  // quarter units below yb
+    const Int<15> dy4 = Int<15>(4 * (int(ye.value()) - int(yb.value())));
+    const Int<26> num = di * t4;
+    const auto along = fixed_div<Fixed<Intensity::width + 2, 10, Intensity::quant, Overflow::kSat>>(
+        Fixed<26, 26>::from_raw(num), Fixed<15, 15>::from_raw(dy4));
+    return Intensity(Fixed<9, 9>::from_raw(Int<9>(int(ib.value()))) + along);  // saturates to 0..255
+  }
+  // Eq. 4 on e8m7 values.
+  static Depth depth_at(const Depth& zb, const Depth& ze, const Coord& yb, const Coord& ye,
+                                          int yt_quarter) {
+    return zfloat_lerp(zb, ze, Int<16>(yt_quarter - 4 * int(yb.value())), Int<16>(4 * (int(ye.value()) - int(yb.value()))));
+  }
+
+  // ---- Video channel ----
+  // A sample's colour component in output LSB (0..255) with 8 fractional bits.
+  using Sample = UFixed<16, 8, Quant::kRound, Overflow::kSat>;
+  // Fog factor f in [0, 1], 8 fractional bits (raw 0..256).
+  using FogFactor = UFixed<9, 1, Quant::kRound, Overflow::kSat>;
+  // Haze as a function of Z (SPEC D): a table indexed by the whole 15-bit e8m7 code, loaded by the
+  // host for each frame from the fog range.
+  struct FogTable {
+    FogFactor f[1 << 15];
+  };
+
+  // X of sample column i: 2 X_i = (u/2) i + u/4 - 2 (half units), exact with one fractional bit.
+  static X column_x(const RowGeometry& g, int i) {
+    return X(Fixed<16, 15>::from_raw(Int<16>(g.row_half(i))));
+  }
+  static X midpoint(const X& a, const X& b) {
+    const auto sum = a + b;  // one more integer bit
+    return X(Fixed<decltype(sum)::width, decltype(sum)::int_bits - 1>::from_raw(sum.raw()));  // halve
+  }
+  // I along a segment: il + (ir - il) * num / den, confined to [min(il, ir), max(il, ir)].
+  static Intensity lerp_intensity(const Intensity& il, const Intensity& ir, const X& num,
+                                                    const X& den) {
+    if (!(den.raw().value() > 0) || !(num.raw().value() > 0)) return il;
+    if (!(num < den)) return ir;
+    const auto d = ir - il;  // signed, one more bit
+    // t = num / den in [0, 1], 16 fractional bits.
+    const auto t = fixed_div<Fixed<18, 2, Quant::kRound, Overflow::kSat>>(num, den);
+    return Intensity(il + d * t);
+  }
+  static Depth lerp_depth(const Depth& zl, const Depth& zr, const X& num, const X& den) {
+    if (!(den.raw().value() > 0) || !(num.raw().value() > 0)) return zl;
+    if (!(num < den)) return zr;
+    return zfloat_lerp(zl, zr, wrap<32>(num.raw()), wrap<32>(den.raw()));
+  }
+  static FogFactor fog_factor(const FogTable& t, const Depth& z) { return t.f[z.bits.value()]; }
+  // colour x I (SPEC D: "colour = polygon colour x I"): c * I / 256 in output LSB.
+  static Sample shade(const Level& c, const Intensity& i) {
+    const auto p = UFixed<8, 8>::from_raw(c) * i;  // UFixed<8 + W, 16>: c * I
+    return Sample(UFixed<decltype(p)::width, 8>::from_raw(p.raw()));  // / 256
+  }
+  // Fog: s * (1 - f) + fog * f.
+  static Sample mix(const Sample& s, const Level& fog, const FogFactor& f) {
+    const auto one = FogFactor::from_raw_value(256);
+    const auto keep = one - f;  // signed view, exact
+    return Sample(to_signed(s) * keep + Fixed<9, 9>::from_raw(Int<9>(int(fog.value()))) * to_signed(f));
+  }
+  static Sample level_sample(const Level& c) { return Sample(UFixed<8, 8>::from_raw(c)); }
+  // Box filter: the mean of the 16 samples, rounded half up, saturated to 255.
+  static UInt<8> resolve(const Sample (&s)[16]) {
+    UFixed<20, 12> sum;
+    for (int k = 0; k < 16; ++k) sum = UFixed<20, 12>(sum + s[k]);
+    const UFixed<8, 8, Quant::kRound, Overflow::kSat> mean(UFixed<20, 8>::from_raw(sum.raw()));  // / 16
+    return mean.raw();
+  }
+
+  // The video channel's sample columns: first column i with X_i >= x, and first with X_i >= x
+  // (exclusive end for a right edge), where 2 X_i = (u/2) i + u/4 - 2 (half units).
+  static int first_column_at_or_after(const RowGeometry& g, const X& x) {
+    // ceil((2x - offset) / 2^s), computed on x's raw value (F fractional bits).
+    constexpr int F = X::frac_bits;
+    const Int<X::width + 9> t = shl<1>(x.raw()) - (Int<X::width + 7>(g.offset_half) << F);
+    const int sh = F + g.log2_half_spacing;
+    const Int<X::width + 9> bias((1 << sh) - 1);
+    return int(t.value() <= 0 ? -((-t) >> sh).value() : ((t + bias) >> sh).value());
+  }
+};
+
+// Format sets for the run-time / error table. X: grid units; Slope: grid units per sample row;
+// Intensity: 0..255. All round to nearest (half up) and saturate.
+struct SegmentFormatCoarse {
+  static constexpr const char* name = "x2s6i0";
+  using X = Fixed<16, 14, Quant::kRound, Overflow::kSat>;
+  using Slope = Fixed<26, 20, Quant::kRound, Overflow::kSat>;
+  using Intensity = UFixed<8, 8, Quant::kRound, Overflow::kSat>;
+};
+struct SegmentFormatMedium {
+  static constexpr const char* name = "x4s10i2";
+  using X = Fixed<18, 14, Quant::kRound, Overflow::kSat>;
+  using Slope = Fixed<30, 20, Quant::kRound, Overflow::kSat>;
+  using Intensity = UFixed<10, 8, Quant::kRound, Overflow::kSat>;
+};
+struct SegmentFormatFine {
+  static constexpr const char* name = "x10s18i6";
+  using X = Fixed<24, 14, Quant::kRound, Overflow::kSat>;
+  using Slope = Fixed<38, 20, Quant::kRound, Overflow::kSat>;
+  using Intensity = UFixed<14, 8, Quant::kRound, Overflow::kSat>;
+};
+
+// The format of the top functions and of `--engine segment` unless told otherwise.
+using SegmentFormatDefault = SegmentFormatFine;
+using DefaultSegmentArith = FixedSegmentArith<SegmentFormatDefault>;
+
+CIG_HLS_END_NAMESPACE

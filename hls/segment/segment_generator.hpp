@@ -1,0 +1,101 @@
+// Segment generator (SPEC D, seed 001): for every raster line a polygon crosses, one segment:
+// the left and right X at the first and last covered sample rows of the line (incremental
+// stepping by the slope along each edge: the seed's "four X values"), the segment type (1 holds
+// the polygon's top, 2 its bottom, 3 neither, 4 both) and I and Z at both ends by eq. 3-4,
+// evaluated at the centre of the line's covered rows. X is stored for each covered sample row
+// (records.hpp explains why).
+#pragma once
+
+#include "hls/segment/segment_arith.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+namespace detail {
+
+// Index of the chain edge that covers row k, searching forward from `from` (rows increase).
+template <class P>
+int edge_for_row(const Edge<P>* chain, int count, int from, int k) {
+  int e = from;
+  for (int s = 0; s < kMaxEdgesPerChain; ++s) {
+    if (e + 1 >= count || chain[e].row_last >= k) break;
+    ++e;
+  }
+  return e;
+}
+
+template <class P>
+typename P::X x_at_row(const Edge<P>& e, int k) {
+  return P::step(e.x_first, e.dx_per_row, k - e.row_first);
+}
+
+}  // namespace detail
+
+// seed_quadrilateral: fill the middle rows by interpolating between the first and last covered
+// rows, as the seed's four-X segment does (for measuring what that approximation costs).
+// Writes the polygon's segments, top line first, to out[0..count); returns count.
+template <class P>
+int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channel, bool seed_quadrilateral,
+                      Segment<P> (&out)[kMaxLines]) {
+  if (!in.valid) return 0;
+  const RowGeometry g = RowGeometry::for_raster(raster_log2);
+  const PolygonHeader<P>& h = in.h;
+  const int lc = int(h.left_count.value()), rc = int(h.right_count.value());
+  const int line_first = h.row_first >> 2, line_last = h.row_last >> 2;
+  int le = 0, re = 0;  // current edges of the left and right chains
+  int count = 0;
+  for (int line = 0; line < kMaxLines; ++line) {
+    const int L = line_first + line;
+    if (L > line_last) break;
+    const int rf = h.row_first > 4 * L ? h.row_first : 4 * L;          // first covered row
+    const int rl = h.row_last < 4 * L + 3 ? h.row_last : 4 * L + 3;    // last covered row
+    const int rm = (rf + rl) >> 1;                                      // the row I and Z use
+    const int yt_quarter = g.row_half(rf) + g.row_half(rl);             // centre of rf..rl, quarter units
+    Segment<P>& s = out[count++];
+    s.line = UInt<10>(L);
+    const bool top = rf == h.row_first, bottom = rl == h.row_last;
+    s.type = UInt<3>(top && bottom ? kSegWhole : top ? kSegTop : bottom ? kSegBottom : kSegMiddle);
+    s.row_first = UInt<2>(rf - 4 * L);
+    s.row_last = UInt<2>(rl - 4 * L);
+    int lm = le, rmi = re;
+    for (int r = 0; r < kRowsPerLine; ++r) {
+      const int k = 4 * L + r;
+      if (k < rf || k > rl) continue;
+      le = detail::edge_for_row(in.left, lc, le, k);   // X advances by the slope, edge by edge
+      re = detail::edge_for_row(in.right, rc, re, k);
+      s.xl[r] = detail::x_at_row(in.left[le], k);
+      s.xr[r] = detail::x_at_row(in.right[re], k);
+      if (k == rm) {
+        lm = le;
+        rmi = re;
+      }
+    }
+    if (seed_quadrilateral && rl - rf >= 2) {
+      const int a = rf - 4 * L, b = rl - 4 * L;
+      for (int r = 1; r < kRowsPerLine - 1; ++r) {
+        if (r <= a || r >= b) continue;
+        s.xl[r] = P::lerp_x(s.xl[a], s.xl[b], r - a, b - a);
+        s.xr[r] = P::lerp_x(s.xr[a], s.xr[b], r - a, b - a);
+      }
+    }
+    // Eq. 3-4 at the centre of the covered rows, on the edges that hold the middle row.
+    const Edge<P>& el = in.left[lm];
+    s.il = P::intensity_at(el.i_begin, el.i_end, el.y_begin, el.y_end, yt_quarter);
+    s.zl = P::depth_at(el.z_begin, el.z_end, el.y_begin, el.y_end, yt_quarter);
+    const Edge<P>& er = in.right[rmi];
+    s.ir = P::intensity_at(er.i_begin, er.i_end, er.y_begin, er.y_end, yt_quarter);
+    s.zr = P::depth_at(er.z_begin, er.z_end, er.y_begin, er.y_end, yt_quarter);
+    s.source = h.id;
+    s.is_light = false;
+    s.opaque = h.opaque;
+    s.channel = channel;
+  }
+  return count;
+}
+
+// Top function (HLS): the default format.
+inline int segment_generator_top(const PolygonEdges<DefaultSegmentArith>& in, UInt<4> raster_log2, UInt<3> channel,
+                                 Segment<DefaultSegmentArith> (&out)[kMaxLines]) {
+  return generate_segments<DefaultSegmentArith>(in, int(raster_log2.value()), channel, false, out);
+}
+
+CIG_HLS_END_NAMESPACE

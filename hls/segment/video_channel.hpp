@@ -1,0 +1,138 @@
+// Video channel (SPEC D, seed 001): turns one raster line's segments into pixels. Segments come
+// from the line's list in the segment memory, in priority order; each covers, on each of its
+// sample rows, the samples with left X <= X_i < right X (left edges inclusive, right edges
+// exclusive: the float reference's tie rule). A sample takes the colour of the
+// first segment that covers it (visibility by priority): colour x I, I interpolated along the
+// segment, then fog by Z (interpolated along the segment, looked up in the fog table). The 4 x 4
+// samples of a pixel are averaged (the anti-aliasing filter). The per-pixel polygon id is the
+// polygon owning most of the pixel's samples, light points aside (as in the float reference).
+#pragma once
+
+#include "hls/segment/y_sorter.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+template <class P>
+struct VideoTables {
+  typename P::Level polygon_colour[kMaxPolygonIds][3];
+  typename P::Level light_colour[kMaxPolygonIds][3];
+  typename P::FogTable fog;
+  typename P::Level fog_colour[3];
+  typename P::Level background[3];
+};
+
+template <class P>
+struct LineBuffer {
+  typename P::Sample rgb[kRowsPerLine][kMaxRows][3];
+  bool owned[kRowsPerLine][kMaxRows];
+  int polygon[kRowsPerLine][kMaxRows];  // first polygon covering the sample, -1 none
+};
+
+struct PixelLine {
+  UInt<8> rgb[kMaxLines][3];
+  int id[kMaxLines];
+};
+
+namespace detail {
+
+template <class P>
+void draw_segment(const Segment<P>& s, int line, const RowGeometry& g, int cols,
+                                    const VideoTables<P>& t, LineBuffer<P>& w) {
+  const int rf = int(s.row_first.value()), rl = int(s.row_last.value());
+  const int src = int(s.source.value());
+  // Where il and zl (ir and zr) hold: the left (right) X at the centre of the covered rows.
+  const typename P::X xlt = P::midpoint(s.xl[rf], s.xl[rl]);
+  const typename P::X xrt = P::midpoint(s.xr[rf], s.xr[rl]);
+  const typename P::X span = typename P::X(xrt - xlt);
+  for (int r = 0; r < kRowsPerLine; ++r) {
+    if (r < rf || r > rl) continue;
+    int i0 = P::first_column_at_or_after(g, s.xl[r]);
+    int i1 = P::first_column_at_or_after(g, s.xr[r]) - 1;  // right end exclusive
+    if (i0 < 0) i0 = 0;
+    if (i1 > cols - 1) i1 = cols - 1;
+    const int row = 4 * line + r;
+    for (int k = 0; k < kMaxRows; ++k) {
+      const int i = i0 + k;
+      if (i > i1) break;
+      if (!s.opaque && ((i + row) & 1) != 0) continue;  // screen door, as the float reference
+      if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
+      if (w.owned[r][i]) continue;
+      w.owned[r][i] = true;
+      const typename P::X along = typename P::X(P::column_x(g, i) - xlt);
+      const typename P::Intensity in = P::lerp_intensity(s.il, s.ir, along, span);
+      const typename P::Depth z = P::lerp_depth(s.zl, s.zr, along, span);
+      const typename P::FogFactor f = P::fog_factor(t.fog, z);
+      for (int c = 0; c < 3; ++c) {
+        const typename P::Level colour = s.is_light ? t.light_colour[src][c] : t.polygon_colour[src][c];
+        w.rgb[r][i][c] = P::mix(P::shade(colour, in), t.fog_colour[c], f);
+      }
+    }
+  }
+}
+
+}  // namespace detail
+
+// Renders raster line `line` of an N = 2^raster_log2 raster; returns the segments it read.
+template <class P, int K>
+int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t,
+                                  LineBuffer<P>& w, PixelLine& out) {
+  const RowGeometry g = RowGeometry::for_raster(raster_log2);
+  const int n = 1 << raster_log2, cols = kRowsPerLine * n;
+  for (int r = 0; r < kRowsPerLine; ++r)
+    for (int i = 0; i < kMaxRows; ++i) {
+      if (i >= cols) break;
+      w.owned[r][i] = false;
+      w.polygon[r][i] = -1;
+    }
+  const int b = line & 1;
+  int p = m.head[line];
+  int read = 0;
+  for (int k = 0; k < K; ++k) {
+    if (p == kNullPointer) break;
+    detail::draw_segment(m.seg[b][p], line, g, cols, t, w);
+    ++read;
+    p = m.next[b][p];
+  }
+  // Box filter and majority id per pixel.
+  for (int px = 0; px < kMaxLines; ++px) {
+    if (px >= n) break;
+    typename P::Sample s[3][16];
+    int ids[16];
+    for (int r = 0; r < kRowsPerLine; ++r)
+      for (int q = 0; q < kRowsPerLine; ++q) {
+        const int i = 4 * px + q;
+        for (int c = 0; c < 3; ++c) s[c][4 * r + q] = w.owned[r][i] ? w.rgb[r][i][c] : P::level_sample(t.background[c]);
+        ids[4 * r + q] = w.polygon[r][i];
+      }
+    for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve(s[c]);
+    bool uniform = true;  // the common case: one owner for the whole pixel
+    for (int a = 1; a < 16; ++a) uniform = uniform && ids[a] == ids[0];
+    if (uniform) {
+      out.id[px] = ids[0];
+      continue;
+    }
+    int best = -1, best_count = 0;
+    for (int a = 0; a < 16; ++a) {
+      int count = 0;
+      for (int b2 = 0; b2 < 16; ++b2) count += ids[b2] == ids[a] ? 1 : 0;
+      // Most samples wins; ties go to the earlier polygon; the background (-1) loses ties.
+      const bool better = count > best_count ||
+                          (count == best_count && ids[a] != best &&
+                           (best == -1 ? ids[a] >= 0 : (ids[a] >= 0 && ids[a] < best)));
+      if (better) {
+        best = ids[a];
+        best_count = count;
+      }
+    }
+    out.id[px] = best;
+  }
+  return read;
+}
+
+inline int video_channel_top(UInt<10> line, UInt<4> raster_log2, const SegmentMemory<DefaultSegmentArith>& m,
+                             const VideoTables<DefaultSegmentArith>& t, LineBuffer<DefaultSegmentArith>& w,
+                             PixelLine& out) {
+  return render_line(int(line.value()), int(raster_log2.value()), m, t, w, out);
+}
+
+CIG_HLS_END_NAMESPACE

@@ -1,0 +1,23 @@
+// Planted violation (verif/hls_subset/README.md): a run-time bound dressed as a constant (a
+// k-prefixed name that is not constexpr).
+// expect: loop-bound
+#pragma once
+
+#include "hls/types/fixed.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+constexpr int kPlantedMaxTaps = 16;
+
+// Sum of the first n samples.
+inline UInt<12> planted_sum_top(const UInt<8> (&in)[kPlantedMaxTaps], int n) {
+  const int kTaps = n;  // clean: constexpr int kTaps = kPlantedMaxTaps;
+  UInt<12> sum;
+  for (int k = 0; k < kTaps; ++k) {
+    if (k >= n) break;
+    sum = wrap_unsigned<12>(sum + in[k]);
+  }
+  return sum;
+}
+
+CIG_HLS_END_NAMESPACE
