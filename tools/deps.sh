@@ -6,6 +6,7 @@ packages=(
   g++ cmake make pkg-config       # toolchain
   libgtest-dev libbenchmark-dev   # GoogleTest, Google Benchmark
   libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev
+  libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
   assimp-testmodels               # real OBJ models for the loader tests
 )
 missing=()

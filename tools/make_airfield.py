@@ -1285,6 +1285,13 @@ def object_layer(name):
     return 0
 
 
+def parts_by_distance(name):
+    """Objects made of separate, free-standing parts (a row of tanks, houses, cars, trees) rank
+    their subobjects by distance; objects whose parts touch (walls and roofs, wings on a
+    fuselage, markings on a runway) keep the modeller's database order."""
+    return name.startswith(('fuel_farm', 'village_', 'carpark_cars', 'forest_'))
+
+
 def obj_world_pose(o):
     if o.frame == 'W':
         return o.origin, 0.0
@@ -1318,6 +1325,8 @@ def write(frames, out):
         layer = object_layer(o.name)
         if layer:
             w(', "layer": %d' % layer)
+        if parts_by_distance(o.name) and len([s for s in o.subs if not s.empty()]) > 1:
+            w(', "subobject_order": "distance"')
         if hdg:
             w(', "heading": %s' % num(hdg))
         if o.sphere:

@@ -88,7 +88,8 @@ int CompareCommand::run() {
         const ScreenFrame f = pipeline ? pipeline->geometry(jobs[k].first, jobs[k].second, unused) : frames[0];
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
-        rows[k] = {jobs[k].first, jobs[k].second, compare_images(got.out.image, want.out.image),
+        rows[k] = {jobs[k].first, jobs[k].second,
+                   compare_images(got.out.image, want.out.image, got.out.ids, want.out.ids),
                    differing_ids(got.out.ids, want.out.ids)};
         if (!out_dir.empty())
           write_png((std::filesystem::path(out_dir) / (frame_name(jobs[k].first) + "_ch" + std::to_string(jobs[k].second) +
@@ -141,11 +142,17 @@ int CompareCommand::run() {
             << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B " << all.max_abs[2] << ", "
             << all.pixels_over_2lsb << " of " << pixels << " pixels off by more than 2 LSB, " << ids
             << " pixels with another polygon id\n";
+  const double share = all.sum_squared > 0 ? 100.0 * all.sum_squared_ids_differ / all.sum_squared : 0.0;
+  std::cout << "      error attribution: " << std::setprecision(1) << share
+            << " % of the squared error lies in the " << all.pixels_ids_differ
+            << " pixels whose visible polygon differs (visibility, coverage), " << 100.0 - share
+            << " % in pixels showing the same polygon (shading, fog, quantization)\n";
   rep["psnr_all"] = all.psnr();
   rep["psnr_min"] = min_psnr;
   rep["pixels"] = pixels;
   rep["pixels_over_2lsb"] = all.pixels_over_2lsb;
   rep["ids_differ"] = ids;
+  rep["squared_error_share_ids_differ"] = all.sum_squared > 0 ? all.sum_squared_ids_differ / all.sum_squared : 0.0;
   if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
   return 0;
 }

@@ -17,24 +17,38 @@ void ImageError::add(const ImageError& e) {
   sum_squared += e.sum_squared;
   for (int c = 0; c < 3; ++c) max_abs[c] = std::max(max_abs[c], e.max_abs[c]);
   pixels_over_2lsb += e.pixels_over_2lsb;
+  sum_squared_ids_differ += e.sum_squared_ids_differ;
+  pixels_ids_differ += e.pixels_ids_differ;
 }
 
-ImageError compare_images(const Image& got, const Image& reference) {
+ImageError compare_images(const Image& got, const Image& reference, const IdBuffer& got_ids,
+                          const IdBuffer& reference_ids) {
   if (got.width != reference.width || got.height != reference.height)
     throw std::runtime_error("compare: images differ in size");
+  const bool with_ids = !got_ids.id.empty() && got_ids.id.size() == reference_ids.id.size();
   ImageError e;
   e.pixels = long(got.width) * long(got.height);
   for (std::size_t p = 0; p < std::size_t(e.pixels); ++p) {
     bool over = false;
+    double sq = 0;
     for (int c = 0; c < 3; ++c) {
       const int d = std::abs(int(got.rgb[3 * p + std::size_t(c)]) - int(reference.rgb[3 * p + std::size_t(c)]));
-      e.sum_squared += double(d) * d;
+      sq += double(d) * d;
       e.max_abs[c] = std::max(e.max_abs[c], d);
       over = over || d > 2;
     }
+    e.sum_squared += sq;
     e.pixels_over_2lsb += over;
+    if (with_ids && got_ids.id[p] != reference_ids.id[p]) {
+      e.sum_squared_ids_differ += sq;
+      ++e.pixels_ids_differ;
+    }
   }
   return e;
+}
+
+ImageError compare_images(const Image& got, const Image& reference) {
+  return compare_images(got, reference, IdBuffer(), IdBuffer());
 }
 
 Image difference_image(const Image& got, const Image& reference, int gain) {

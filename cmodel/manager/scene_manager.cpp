@@ -37,14 +37,20 @@ PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, Sc
   for (const auto& vis : visible) {
     const WorldObject& o = db.objects[vis.object];
     PriorityEntry entry{vis.object, {}};
+    std::vector<std::pair<double, std::uint32_t>> by_distance;
     for (std::uint32_t s = 0; s < o.subobjects.size(); ++s) {
       ++stats.subobjects_tested;
       const WorldSubobject& sub = o.subobjects[s];
-      if (sphere_may_be_visible(pyramid, view.to_eye(sub.centre), sub.radius)) {
-        entry.subobjects.push_back(s);
+      const glm::dvec3 c = view.to_eye(sub.centre);
+      if (sphere_may_be_visible(pyramid, c, sub.radius)) {
+        by_distance.push_back({glm::length(c), s});
         ++stats.subobjects_visible;
       }
     }
+    if (o.subobjects_by_distance)
+      std::stable_sort(by_distance.begin(), by_distance.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& d : by_distance) entry.subobjects.push_back(d.second);
     if (!entry.subobjects.empty() || !o.light_positions.empty()) list.objects.push_back(std::move(entry));
   }
   return list;

@@ -155,6 +155,32 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
   for (const auto& p : frame.polygons)
     if (setup_coverage(p, lattice).empty) ++stats.polygons_empty;
 
+  // Light points are points: visible or hidden as a whole. A light is drawn (its whole disc)
+  // when it is at least as near as the polygon surface at the sample nearest its centre; the
+  // disc is a rendering of a point, so the ground behind a runway light's lower half does not
+  // cut it.
+  std::vector<char> light_visible(frame.light_points.size(), 0);
+  for (std::size_t li = 0; li < frame.light_points.size(); ++li) {
+    double cx, cy, r;
+    light_geometry(frame.light_points[li], cx, cy, r);
+    const int ic = int(std::clamp(std::round(cx), 0.0, double(m - 1)));
+    const int jc = int(std::clamp(std::round(cy), 0.0, double(m - 1)));
+    const int strip = std::min(strips - 1, jc / strip_rows);
+    double surface = 0;  // w of the nearest polygon at (ic, jc); 0: none
+    for (std::uint32_t b = poly_bins.first[std::size_t(strip)]; b < poly_bins.first[std::size_t(strip) + 1]; ++b) {
+      const std::size_t pi = poly_bins.items[b];
+      const ScreenPolygon& p = frame.polygons[pi];
+      if (!screen_door_passes(p.opaque, ic, jc)) continue;
+      const CoverageSetup cov = setup_coverage(p, lattice);
+      if (cov.empty || !(cov.ymin <= jc && jc <= cov.ymax) || !cov.covers(double(ic), double(jc))) continue;
+      const DepthPlane dp = &depth_source == &frame
+                                ? fit_depth_plane(cov, p)
+                                : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), p);
+      surface = std::max(surface, dp.at(double(ic), double(jc)));
+    }
+    light_visible[li] = 1.0 / frame.light_points[li].zs >= surface;
+  }
+
   const std::size_t strip_samples = std::size_t(m) * std::size_t(strip_rows);
   std::vector<double> depth(strip_samples);  // w = 1/Z; 0 = nothing drawn (infinitely far)
   std::vector<std::int32_t> owner(strip_samples);
@@ -199,9 +225,10 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
           });
     }
 
-    // Light points over the polygons; a sample keeps the nearest light (ties: the later one).
+    // Visible light points over the polygons; a sample keeps the nearest light (ties: the later one).
     for (std::uint32_t b = light_bins.first[std::size_t(strip)]; b < light_bins.first[std::size_t(strip) + 1]; ++b) {
       const std::size_t li = light_bins.items[b];
+      if (!light_visible[li]) continue;
       const ScreenLightPoint& l = frame.light_points[li];
       double cx, cy, r;
       light_geometry(l, cx, cy, r);
@@ -215,7 +242,6 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
           const double dx = double(i) - cx, dy = double(j) - cy;
           if (dx * dx + dy * dy > r * r) continue;
           const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
-          if (wl < depth[idx]) continue;
           if (light[idx] >= 0 && wl < 1.0 / frame.light_points[std::size_t(light[idx])].zs) continue;
           if (light[idx] < 0) ++stats.light_samples;
           light[idx] = std::int32_t(li);

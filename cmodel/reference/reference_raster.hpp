@@ -8,8 +8,9 @@
 //  * intensity: Gouraud as the seed defines it (eq. 3): along the left and right edges by Y, then
 //    linearly along the row; colour = polygon colour x I;
 //  * fog: linear in eye depth between fog start and end, towards the fog colour;
-//  * light points: discs of diameter D = min(2048*Ds, 7) grid units (eq. 1), depth-tested against
-//    the polygons (a light wins ties with the surface it sits on);
+//  * light points: discs of diameter D = min(2048*Ds, 7) grid units (eq. 1), visible or hidden as
+//    a whole: drawn when the light is at least as near as the polygon surface at the sample
+//    nearest its centre (a point source; its exaggerated disc is not cut by the ground behind it);
 //  * non-opaque polygons are screen-door transparent (half the samples of a fixed checkerboard);
 //  * resolve: box filter over the 16 samples, rounded to 8 bits; the id of a pixel is the
 //    polygon owning most of its samples (ties: the earlier polygon; background loses ties).

@@ -62,6 +62,10 @@ struct Object {
   // them, the sky below everything, because an object's centre distance alone cannot order a
   // building before the ground polygon that extends behind it.
   int layer = 0;
+  // Subobject priority within the object (SPEC A.5): database order (decals before the surface
+  // they lie on), or by distance from the observer to each subobject's centre (objects made of
+  // separate parts, such as a row of tanks, whose order depends on the viewpoint).
+  bool subobjects_by_distance = false;
   std::vector<Subobject> subobjects;
   std::vector<LightPoint> light_points;
   glm::dvec3 sphere_centre{0};  // object coordinates

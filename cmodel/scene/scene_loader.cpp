@@ -136,11 +136,16 @@ LightPoint read_light_point(const JsonNode& n) {
 }
 
 Object read_object(const JsonNode& n, const std::string& scene_file) {
-  n.allow_only({"name", "position", "heading", "pitch", "roll", "layer", "bounding_sphere", "subobjects",
-                "light_points"});
+  n.allow_only({"name", "position", "heading", "pitch", "roll", "layer", "subobject_order", "bounding_sphere",
+                "subobjects", "light_points"});
   Object o;
   if (auto nm = n.find("name")) o.name = nm->string();
   if (auto l = n.find("layer")) o.layer = int(l->integer(-8, 8));
+  if (auto so = n.find("subobject_order")) {
+    const std::string v = so->string();
+    if (v != "database" && v != "distance") so->fail("must be \"database\" or \"distance\", is \"" + v + "\"");
+    o.subobjects_by_distance = v == "distance";
+  }
   if (n.has("position")) o.pose = read_pose(n);
   else {
     o.pose.heading_deg = n.number_or("heading", 0);

@@ -80,6 +80,7 @@ WorldDatabase build_world_database(const Scene& scene) {
     w.centre = rot * o.sphere_centre + o.pose.position;
     w.radius = o.sphere_radius;
     w.layer = o.layer;
+    w.subobjects_by_distance = o.subobjects_by_distance;
     db.objects.push_back(std::move(w));
   }
   return db;

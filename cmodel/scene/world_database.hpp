@@ -30,6 +30,7 @@ struct WorldObject {
   glm::dvec3 centre{0};
   double radius = 0;
   int layer = 0;
+  bool subobjects_by_distance = false;
 };
 
 struct WorldDatabase {

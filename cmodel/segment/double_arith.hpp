@@ -59,12 +59,12 @@ struct DoubleSegmentArith {
   }
   static double column_x(const RowGeometry& g, int i) { return 0.5 * g.row_half(i); }
   static double midpoint(double a, double b) { return 0.5 * (a + b); }
-  static double lerp_intensity(double il, double ir, double num, double den) {
-    if (!(den > 0) || !(num > 0)) return il;
-    if (!(num < den)) return ir;
-    return il + (ir - il) * num / den;
-  }
-  static double lerp_depth(double zl, double zr, double num, double den) { return lerp_intensity(zl, zr, num, den); }
+  using Reciprocal = double;
+  using Ratio = double;
+  static double reciprocal(double span) { return span > 0 ? 1.0 / span : 0.0; }
+  static double ratio(double along, double inv) { return along > 0 ? std::min(1.0, along * inv) : 0.0; }
+  static double lerp_intensity(double il, double ir, double t) { return il + (ir - il) * t; }
+  static double lerp_depth(double zl, double zr, double t) { return zl + (zr - zl) * t; }
   static double fog_factor(const FogTable& t, double z) { return std::clamp((z - t.start) / (t.end - t.start), 0.0, 1.0); }
   static double shade(double c, double i) { return c * i / 256.0; }
   static double mix(double s, double fog, double f) { return s * (1 - f) + fog * f; }

@@ -31,7 +31,7 @@ struct RowGeometry {
     RowGeometry g{11 - raster_log2, (1 << (10 - raster_log2)) - 2};
     return g;
   }
-  CIG_HLS_CONSTEXPR int row_half(int k) const { return (k << log2_half_spacing) + offset_half; }
+  CIG_HLS_CONSTEXPR int row_half(int k) const { return k * (1 << log2_half_spacing) + offset_half; }
   // Rows with Y_k >= y, i.e. H_k >= 2y: the first is ceil((2y - offset) / 2^s).
   CIG_HLS_CONSTEXPR int first_row_at_or_after_half(int y_half) const {
     const int t = y_half - offset_half;
@@ -80,7 +80,7 @@ struct FixedSegmentArith {
                                                const Coord& xb, const Coord& yb) {
     const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
     const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));  // half units, > 0
-    const Int<26> num = Int<26>(dx.value() << g.log2_half_spacing);        // dx * spacing (half units)
+    const Int<26> num = Int<26>(dx.value() * (1 << g.log2_half_spacing));        // dx * spacing (half units)
     return fixed_div<Slope>(Fixed<26, 26>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
   }
   // The preprocessor's crossing: X at row k on edge (xa, ya)-(xb, yb), one rounding (eq. 2 at a point).
@@ -141,21 +141,23 @@ struct FixedSegmentArith {
     const auto sum = a + b;  // one more integer bit
     return X(Fixed<decltype(sum)::width, decltype(sum)::int_bits - 1>::from_raw(sum.raw()));  // halve
   }
-  // I along a segment: il + (ir - il) * num / den, confined to [min(il, ir), max(il, ir)].
-  static Intensity lerp_intensity(const Intensity& il, const Intensity& ir, const X& num,
-                                                    const X& den) {
-    if (!(den.raw().value() > 0) || !(num.raw().value() > 0)) return il;
-    if (!(num < den)) return ir;
-    const auto d = ir - il;  // signed, one more bit
-    // t = num / den in [0, 1], 16 fractional bits.
-    const auto t = fixed_div<Fixed<18, 2, Quant::kRound, Overflow::kSat>>(num, den);
-    return Intensity(il + d * t);
+  // Interpolation along a segment: t = (x - x_left) / span through one reciprocal per segment
+  // (a divider per segment, a multiplier per sample, as a pipelined video channel does).
+  using Reciprocal = UFixed<32, 8, Quant::kRound, Overflow::kSat>;  // 1/span, 24 fractional bits
+  using Ratio = UFixed<17, 1, Quant::kRound, Overflow::kSat>;       // t in [0, 1], 16 fractional bits
+  static Reciprocal reciprocal(const X& span) {
+    if (!(span.raw().value() > 0)) return Reciprocal();  // empty span: t = 0, the left end's values
+    return fixed_div<Reciprocal>(Fixed<2, 2>::from_raw(Int<2>(1)), span);
   }
-  static Depth lerp_depth(const Depth& zl, const Depth& zr, const X& num, const X& den) {
-    if (!(den.raw().value() > 0) || !(num.raw().value() > 0)) return zl;
-    if (!(num < den)) return zr;
-    return zfloat_lerp(zl, zr, wrap<32>(num.raw()), wrap<32>(den.raw()));
+  static Ratio ratio(const X& along, const Reciprocal& inv) {
+    if (!(along.raw().value() > 0)) return Ratio();
+    const Ratio t(along * to_signed(inv));  // Fixed<W, 14> * Fixed<33, 9>: exact, then rounded
+    return t.raw().value() > (1u << 16) ? Ratio::from_raw_value(1u << 16) : t;
   }
+  static Intensity lerp_intensity(const Intensity& il, const Intensity& ir, const Ratio& t) {
+    return Intensity(to_signed(il) + (ir - il) * to_signed(t));
+  }
+  static Depth lerp_depth(const Depth& zl, const Depth& zr, const Ratio& t) { return zfloat_lerp_ratio(zl, zr, t); }
   static FogFactor fog_factor(const FogTable& t, const Depth& z) { return t.f[z.bits.value()]; }
   // colour x I (SPEC D: "colour = polygon colour x I"): c * I / 256 in output LSB.
   static Sample shade(const Level& c, const Intensity& i) {

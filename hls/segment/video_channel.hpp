@@ -43,7 +43,7 @@ void draw_segment(const Segment<P>& s, int line, const RowGeometry& g, int cols,
   // Where il and zl (ir and zr) hold: the left (right) X at the centre of the covered rows.
   const typename P::X xlt = P::midpoint(s.xl[rf], s.xl[rl]);
   const typename P::X xrt = P::midpoint(s.xr[rf], s.xr[rl]);
-  const typename P::X span = typename P::X(xrt - xlt);
+  const typename P::Reciprocal inv = P::reciprocal(typename P::X(xrt - xlt));  // once per segment
   for (int r = 0; r < kRowsPerLine; ++r) {
     if (r < rf || r > rl) continue;
     int i0 = P::first_column_at_or_after(g, s.xl[r]);
@@ -58,9 +58,9 @@ void draw_segment(const Segment<P>& s, int line, const RowGeometry& g, int cols,
       if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
       if (w.owned[r][i]) continue;
       w.owned[r][i] = true;
-      const typename P::X along = typename P::X(P::column_x(g, i) - xlt);
-      const typename P::Intensity in = P::lerp_intensity(s.il, s.ir, along, span);
-      const typename P::Depth z = P::lerp_depth(s.zl, s.zr, along, span);
+      const typename P::Ratio along = P::ratio(typename P::X(P::column_x(g, i) - xlt), inv);
+      const typename P::Intensity in = P::lerp_intensity(s.il, s.ir, along);
+      const typename P::Depth z = P::lerp_depth(s.zl, s.zr, along);
       const typename P::FogFactor f = P::fog_factor(t.fog, z);
       for (int c = 0; c < 3; ++c) {
         const typename P::Level colour = s.is_light ? t.light_colour[src][c] : t.polygon_colour[src][c];

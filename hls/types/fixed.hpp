@@ -41,6 +41,12 @@ CIG_HLS_CONSTEXPR inline std::int64_t requantize(std::int64_t raw, int from, int
   return floor_q + ((rem > half || (rem == half && (floor_q & 1))) ? 1 : 0);
 }
 
+// v * 2^k for k >= 0 through the unsigned representation: a left shift of a negative value is
+// undefined behaviour in C++17, the two's complement bit pattern is what hardware computes.
+CIG_HLS_CONSTEXPR inline std::int64_t shift_left(std::int64_t v, int k) {
+  return static_cast<std::int64_t>(static_cast<std::uint64_t>(v) << k);
+}
+
 CIG_HLS_CONSTEXPR inline std::int64_t overflow_signed(std::int64_t v, int w, Overflow o) {
   if (o == Overflow::kWrap) return wrap_signed(v, w);
   return v < signed_min(w) ? signed_min(w) : v > signed_max(w) ? signed_max(w) : v;
@@ -179,12 +185,12 @@ struct UnsignedSumFormat {
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR auto operator+(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::SumFormat<Fixed<Wa, Ia>, Fixed<Wb, Ib>>::type;
-  return R::from_raw_value((a.raw().value() << (R::frac_bits - (Wa - Ia))) + (b.raw().value() << (R::frac_bits - (Wb - Ib))));
+  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) + detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR auto operator-(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::SumFormat<Fixed<Wa, Ia>, Fixed<Wb, Ib>>::type;
-  return R::from_raw_value((a.raw().value() << (R::frac_bits - (Wa - Ia))) - (b.raw().value() << (R::frac_bits - (Wb - Ib))));
+  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) - detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR Fixed<Wa + Wb, Ia + Ib> operator*(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
@@ -197,7 +203,7 @@ CIG_HLS_CONSTEXPR Fixed<W + 1, I + 1> operator-(const Fixed<W, I, Q, O>& a) {
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR auto operator+(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::UnsignedSumFormat<UFixed<Wa, Ia>, UFixed<Wb, Ib>>::type;
-  return R::from_raw_value((a.raw().value() << (R::frac_bits - (Wa - Ia))) + (b.raw().value() << (R::frac_bits - (Wb - Ib))));
+  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) + detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR UFixed<Wa + Wb, Ia + Ib> operator*(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
@@ -222,8 +228,8 @@ template <class A, class B>
 CIG_HLS_CONSTEXPR int compare_fixed(const A& a, const B& b) {
   constexpr int F = max_width(A::frac_bits, B::frac_bits);
   static_assert(A::width + F - A::frac_bits <= 64 && B::width + F - B::frac_bits <= 64, "comparison needs more than 64 bits");
-  const std::int64_t x = static_cast<std::int64_t>(a.raw().value()) << (F - A::frac_bits);
-  const std::int64_t y = static_cast<std::int64_t>(b.raw().value()) << (F - B::frac_bits);
+  const std::int64_t x = shift_left(static_cast<std::int64_t>(a.raw().value()), F - A::frac_bits);
+  const std::int64_t y = shift_left(static_cast<std::int64_t>(b.raw().value()), F - B::frac_bits);
   return x < y ? -1 : x > y ? 1 : 0;
 }
 }  // namespace detail

@@ -161,7 +161,7 @@ void exhaustive_fixed_arith() {
       const A a = A::from_raw_value(static_cast<std::int64_t>(ra));
       const B b = B::from_raw_value(static_cast<std::int64_t>(rb));
       constexpr int F = A::frac_bits > B::frac_bits ? A::frac_bits : B::frac_bits;
-      const i128 xa = ra << (F - A::frac_bits), xb = rb << (F - B::frac_bits);  // common scale
+      const i128 xa = ra * (i128(1) << (F - A::frac_bits)), xb = rb * (i128(1) << (F - B::frac_bits));  // common scale
       const auto s = a + b;
       static_assert(decltype(s)::frac_bits == F);
       ASSERT_EQ(i128(s.raw().value()), xa + xb);
@@ -178,7 +178,7 @@ void exhaustive_fixed_arith() {
         // a / b = (ra / 2^Fa) / (rb / 2^Fb); raw = ra * 2^(8 + Fb - Fa) / rb
         i128 n = ra, d = rb;
         const int sh = 8 + B::frac_bits - A::frac_bits;
-        if (sh >= 0) n <<= sh; else d <<= -sh;
+        if (sh >= 0) n *= i128(1) << sh; else d *= i128(1) << -sh;
         if (d < 0) { n = -n; d = -d; }
         ASSERT_EQ(i128(q.raw().value()), sat_ref(quantize_ref(n, d, Quant::kRound), 16));
       }
