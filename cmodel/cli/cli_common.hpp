@@ -23,6 +23,7 @@ struct EngineArgs {
   std::string engine = "float";
   std::vector<std::string> opts;
   bool snap = false;
+  std::string arch, masks;  // shorthands for --engine-opt arch=... / masks=...
 
   void add_to(CLI::App* app) {
     app->add_option("--engine", engine, "raster engine (" + [] {
@@ -32,6 +33,8 @@ struct EngineArgs {
     }() + ")");
     app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
     app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
+    app->add_option("--arch", arch, "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
+    app->add_option("--masks", masks, "quadtree engines: multilevel priority masks on|off");
   }
   EngineOptions options() const {
     EngineOptions o;
@@ -42,6 +45,8 @@ struct EngineArgs {
         throw InputError("", "--engine-opt", "'" + kv + "' is not of the form KEY=VALUE");
       o.params[kv.substr(0, eq)] = kv.substr(eq + 1);
     }
+    if (!arch.empty()) o.params["arch"] = arch;
+    if (!masks.empty()) o.params["masks"] = masks;
     make_engine(engine, o);  // validates the name and the options before any work
     return o;
   }

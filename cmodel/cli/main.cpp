@@ -11,7 +11,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/arch_command.hpp"
 #include "cli/cli_common.hpp"
+#include "cli/sweep_command.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
@@ -63,6 +65,10 @@ int run(int argc, char** argv) {
 
   CompareCommand compare;
   compare.add_to(app);
+  SweepCommand sweep;
+  sweep.add_to(app);
+  ArchCommand arch;
+  arch.add_to(app);
 
   try {
     app.parse(argc, argv);
@@ -92,6 +98,7 @@ int run(int argc, char** argv) {
     } else {
       for (int c = 0; c < int(scene.channels.size()); ++c) channels.push_back(c);
     }
+    make_engine(render_engine.engine, eo)->check_raster(scene.raster);
     std::filesystem::create_directories(out_dir);
     if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
 
@@ -157,6 +164,7 @@ int run(int argc, char** argv) {
     EngineOptions eo = raster_engine.options();
     ScreenFrame frame = load_polygon_list(polys_file);
     auto eng = make_engine(raster_engine.engine, eo);
+    eng->check_raster(frame.raster);
     const auto t0 = Clock::now();
     EngineRun run = eng->render(frame);
     run.report["ms"] = ms_since(t0);
@@ -180,6 +188,8 @@ int run(int argc, char** argv) {
   }
 
   if (*compare.sub) return compare.run();
+  if (*sweep.sub) return sweep.run();
+  if (*arch.sub) return arch.run();
 
   if (*polys) {
     Scene scene = load_scene(polys_scene);

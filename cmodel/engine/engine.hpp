@@ -30,6 +30,8 @@ class RasterEngine {
   virtual ~RasterEngine() = default;
   virtual const char* name() const = 0;
   virtual EngineRun render(const ScreenFrame& frame) = 0;
+  // Checks the engine's options against a raster size before any work (InputError).
+  virtual void check_raster(int /*raster*/) const {}
 };
 
 // Throws InputError (naming the option) for an unknown engine or an option it does not accept.

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "engine/engine.hpp"
+#include "quadtree/quadtree_engine.hpp"
 #include "segment/segment_engine.hpp"
 
 namespace cig {
@@ -36,7 +37,7 @@ class FloatEngine : public RasterEngine {
 
 }  // namespace
 
-std::vector<std::string> engine_names() { return {"float", "segment", "segment-double"}; }
+std::vector<std::string> engine_names() { return {"float", "segment", "segment-double", "quadtree", "quadtree-double"}; }
 
 std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
   auto reject_params = [&](const char* engine) {
@@ -50,6 +51,8 @@ std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineO
   }
   if (name == "segment") return make_segment_engine(options, false);
   if (name == "segment-double") return make_segment_engine(options, true);
+  if (name == "quadtree") return make_quadtree_engine(options, false);
+  if (name == "quadtree-double") return make_quadtree_engine(options, true);
   std::string known;
   for (const auto& n : engine_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError("", "--engine", "unknown engine '" + name + "' (known: " + known + ")");

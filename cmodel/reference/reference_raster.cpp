@@ -9,6 +9,23 @@
 
 namespace cig {
 
+std::int32_t majority_owner(std::int32_t* ids, int count) {
+  // Ties go to the earlier polygon; the background (-1) loses ties.
+  std::sort(ids, ids + count);
+  std::int32_t best = -1;
+  int best_count = 0;
+  for (int a = 0; a < count;) {
+    int b = a;
+    while (b < count && ids[b] == ids[a]) ++b;
+    if (b - a > best_count || (b - a == best_count && best == -1 && ids[a] >= 0)) {
+      best = ids[a];
+      best_count = b - a;
+    }
+    a = b;
+  }
+  return best;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -279,20 +296,7 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
         std::uint8_t* dst = out.image.at(px, py);
         for (int k = 0; k < 3; ++k)
           dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / kSamplesPerPixel, 0.0, 1.0) * 255.0));
-        // Majority owner; ties go to the earlier polygon, background (-1) loses ties.
-        std::sort(ids, ids + nid);
-        std::int32_t best = -1;
-        int best_count = 0;
-        for (int a = 0; a < nid;) {
-          int b = a;
-          while (b < nid && ids[b] == ids[a]) ++b;
-          const int count = b - a;
-          if (count > best_count || (count == best_count && best == -1 && ids[a] >= 0)) {
-            best = ids[a];
-            best_count = count;
-          }
-          a = b;
-        }
+        const std::int32_t best = majority_owner(ids, nid);
         out.ids.id[std::size_t(py) * std::size_t(n) + std::size_t(px)] = best;
       }
     resolve_ms += ms_since(t_resolve);

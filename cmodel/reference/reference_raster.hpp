@@ -38,6 +38,10 @@ struct RasterImage {
 
 RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats);
 
+// The id of a pixel from its samples' owners (polygon index, -1 none): the polygon owning most
+// samples; ties go to the earlier polygon, the background loses ties. Sorts `ids`.
+std::int32_t majority_owner(std::int32_t* ids, int count);
+
 // The snapped reference: coverage (and Gouraud) from the vertices snapped to the formatter grid,
 // depth from the exact vertices of `exact` (the same polygons unsnapped). Snapping X and Y while
 // keeping each vertex's Z would tilt the 1/Z plane of every polygon by a different amount, so

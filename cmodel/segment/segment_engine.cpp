@@ -158,6 +158,22 @@ class SegmentPipeline {
       edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
       protected_polygons += edges.h.protect ? 1 : 0;
     }
+    // Light points are never dropped: their segments (coding table) count with the protected
+    // polygons' in code 0, so that the threshold leaves room for them in both banks (SPEC D: the
+    // threshold makes the frame's segments fit).
+    hls::Segment<P> light_out[hls::kMaxLightSegments];
+    auto light_segments_of = [&](std::size_t li) {
+      const auto fl = F::light(frame.light_points[li], std::uint16_t(li));
+      for (int c = 0; c < 3; ++c) tables_->light_colour[li][c] = fl.colour[c];
+      return F::light_segments(fl, log2, light_out);
+    };
+    long light_segments_field[2] = {0, 0};
+    for (std::size_t li = 0; li < frame.light_points.size(); ++li) {
+      const int k = light_segments_of(li);
+      for (int s = 0; s < k; ++s) ++light_segments_field[light_out[s].line.value() & 1];
+    }
+    for (int f = 0; f < 2; ++f)
+      counts.segments[f][0] = hls::UInt<24>(counts.segments[f][0].value() + light_segments_field[f]);
     const int threshold = hls::overload_threshold_top(counts, hls::kSegmentBankWords);
     const double front_ms = ms_since(t0);
 
@@ -172,13 +188,9 @@ class SegmentPipeline {
     std::size_t next_light = 0;
     long light_segments = 0, polygon_segments = 0, dropped_overload = 0;
     long dropped_by_code[hls::kAreaCodes] = {};
-    hls::Segment<P> light_out[hls::kMaxLightSegments];
     auto emit_lights_before = [&](long priority) {
       for (; next_light < light_order.size() && frame.light_points[light_order[next_light]].priority <= priority; ++next_light) {
-        const std::size_t li = light_order[next_light];
-        const auto fl = F::light(frame.light_points[li], std::uint16_t(li));
-        for (int c = 0; c < 3; ++c) tables_->light_colour[li][c] = fl.colour[c];
-        const int k = F::light_segments(fl, log2, light_out);
+        const int k = light_segments_of(light_order[next_light]);
         for (int s = 0; s < k; ++s) hls::y_sort(light_out[s], *segment_memory_);
         light_segments += k;
       }
@@ -239,8 +251,11 @@ class SegmentPipeline {
                           {"segments_even", counts.segments[0][c].value()},
                           {"segments_odd", counts.segments[1][c].value()},
                           {"polygons_dropped", dropped_by_code[c]}});
+    // per_area_code[0] counts the protected polygons' segments and the light points'.
     rep["overload"] = {{"bank_capacity", hls::kSegmentBankWords},
                        {"threshold", threshold},
+                       {"light_segments_even", light_segments_field[0]},
+                       {"light_segments_odd", light_segments_field[1]},
                        {"polygons_dropped", dropped_overload},
                        {"per_area_code", per_code}};
     rep["segments"] = {{"polygon", polygon_segments},

@@ -96,7 +96,8 @@ struct Edge {
   typename P::Level i_begin, i_end;
   typename P::Depth z_begin, z_end;
   typename P::Slope dx_per_row;      // eq. 2 times the sample-row spacing
-  typename P::X x_first;             // X at row_first (the preprocessor's first crossing)
+  typename P::Slope x_first;         // X at row_first (the preprocessor's first crossing), in the
+                                     // slope's format: it loads the stepping accumulator
 };
 
 // Area codes of eq. 6: 0 protected, 1 (largest) .. 15 (smallest).

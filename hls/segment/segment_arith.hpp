@@ -18,6 +18,7 @@
 // hls-subset-helper: the arithmetic policy and format sets shared by every segment kernel.
 
 #include "hls/segment/records.hpp"
+#include "hls/pixel/sample_colour.hpp"
 #include "hls/segment/zfloat_ops.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
@@ -83,19 +84,24 @@ struct FixedSegmentArith {
     const Int<26> num = Int<26>(dx.value() * (1 << g.log2_half_spacing));        // dx * spacing (half units)
     return fixed_div<Slope>(Fixed<26, 26>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
   }
-  // The preprocessor's crossing: X at row k on edge (xa, ya)-(xb, yb), one rounding (eq. 2 at a point).
-  static X crossing(const RowGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
-                                      const Coord& yb, int k) {
+  // The preprocessor's crossing: X at row k on edge (xa, ya)-(xb, yb), one rounding (eq. 2 at a
+  // point). It loads the X accumulator of the incremental stepping, so it is held in the slope's
+  // format (the accumulator's fractional bits), not rounded to X: with X's precision its rounding
+  // error (up to 1/2 LSB_X) would add to the stepping's before the final rounding into X, and an
+  // exact crossing on a sample column could then round off it (see SegmentFormatFine).
+  static Slope crossing(const RowGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
+                                          const Coord& yb, int k) {
     const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
     const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));
     const Int<15> t2 = Int<15>(g.row_half(k) - coord_half(ya));  // row's distance below ya, half units
     const Int<29> num = dx * t2;
-    const X along = fixed_div<X>(Fixed<29, 29>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
-    return X(Fixed<13, 13>::from_raw(Int<13>(int(xa.value()))) + along);
+    const Slope along = fixed_div<Slope>(Fixed<29, 29>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
+    return Slope(Fixed<13, 13>::from_raw(Int<13>(int(xa.value()))) + along);
   }
-  // Incremental stepping: x + rows * slope, rounded to X (the accumulator is exact in hardware;
-  // rounding happens when the value leaves it).
-  static X step(const X& x, const Slope& s, int rows) {
+  // Incremental stepping: x + rows * slope from the accumulator (the first crossing, in the
+  // slope's format), rounded to X (the accumulator is exact in hardware; rounding happens when
+  // the value leaves it).
+  static X step(const Slope& x, const Slope& s, int rows) {
     return X(x + Fixed<13, 13>::from_raw(Int<13>(rows)) * s);
   }
   // Linear interpolation x0 + (x1 - x0) * num / den (den in 1..3: the video channel's rows).
@@ -123,15 +129,10 @@ struct FixedSegmentArith {
   }
 
   // ---- Video channel ----
-  // A sample's colour component in output LSB (0..255) with 8 fractional bits.
-  using Sample = UFixed<16, 8, Quant::kRound, Overflow::kSat>;
-  // Fog factor f in [0, 1], 8 fractional bits (raw 0..256).
-  using FogFactor = UFixed<9, 1, Quant::kRound, Overflow::kSat>;
-  // Haze as a function of Z (SPEC D): a table indexed by the whole 15-bit e8m7 code, loaded by the
-  // host for each frame from the fog range.
-  struct FogTable {
-    FogFactor f[1 << 15];
-  };
+  // Sample colour, fog and the box filter are shared with every engine (hls/pixel/sample_colour.hpp).
+  using Sample = SampleColour;
+  using FogFactor = ::cig::hls::FogFactor;
+  using FogTable = ::cig::hls::FogTable;
 
   // X of sample column i: 2 X_i = (u/2) i + u/4 - 2 (half units), exact with one fractional bit.
   static X column_x(const RowGeometry& g, int i) {
@@ -158,26 +159,11 @@ struct FixedSegmentArith {
     return Intensity(to_signed(il) + (ir - il) * to_signed(t));
   }
   static Depth lerp_depth(const Depth& zl, const Depth& zr, const Ratio& t) { return zfloat_lerp_ratio(zl, zr, t); }
-  static FogFactor fog_factor(const FogTable& t, const Depth& z) { return t.f[z.bits.value()]; }
-  // colour x I (SPEC D: "colour = polygon colour x I"): c * I / 256 in output LSB.
-  static Sample shade(const Level& c, const Intensity& i) {
-    const auto p = UFixed<8, 8>::from_raw(c) * i;  // UFixed<8 + W, 16>: c * I
-    return Sample(UFixed<decltype(p)::width, 8>::from_raw(p.raw()));  // / 256
-  }
-  // Fog: s * (1 - f) + fog * f.
-  static Sample mix(const Sample& s, const Level& fog, const FogFactor& f) {
-    const auto one = FogFactor::from_raw_value(256);
-    const auto keep = one - f;  // signed view, exact
-    return Sample(to_signed(s) * keep + Fixed<9, 9>::from_raw(Int<9>(int(fog.value()))) * to_signed(f));
-  }
-  static Sample level_sample(const Level& c) { return Sample(UFixed<8, 8>::from_raw(c)); }
-  // Box filter: the mean of the 16 samples, rounded half up, saturated to 255.
-  static UInt<8> resolve(const Sample (&s)[16]) {
-    UFixed<20, 12> sum;
-    for (int k = 0; k < 16; ++k) sum = UFixed<20, 12>(sum + s[k]);
-    const UFixed<8, 8, Quant::kRound, Overflow::kSat> mean(UFixed<20, 8>::from_raw(sum.raw()));  // / 16
-    return mean.raw();
-  }
+  static FogFactor fog_factor(const FogTable& t, const Depth& z) { return fog_lookup(t, z); }
+  static Sample shade(const Level& c, const Intensity& i) { return ::cig::hls::shade(c, i); }
+  static Sample mix(const Sample& s, const Level& fog, const FogFactor& f) { return fog_mix(s, fog, f); }
+  static Sample level_sample(const Level& c) { return ::cig::hls::level_sample(c); }
+  static UInt<8> resolve(const Sample (&s)[16]) { return resolve_box(s); }
 
   // The video channel's sample columns: first column i with X_i >= x, and first with X_i >= x
   // (exclusive end for a right edge), where 2 X_i = (u/2) i + u/4 - 2 (half units).
@@ -205,10 +191,19 @@ struct SegmentFormatMedium {
   using Slope = Fixed<30, 20, Quant::kRound, Overflow::kSat>;
   using Intensity = UFixed<10, 8, Quant::kRound, Overflow::kSat>;
 };
+// Fine: the coverage is EXACT (equal, sample for sample, to the exact edge functions with the tie
+// rule). An edge's exact crossing at a sample row, xa + dx (Y_k - ya) / dy, and a sample column
+// X_i (a multiple of 1/2 unit) differ by a multiple of 1/(2 dy) >= 1/8190 > 2^-13 units, or are
+// equal. The accumulator holds the first crossing and the slope rounded to 26 fractional bits
+// (errors <= 2^-27 each), so after m <= 4095 steps it is off by at most (m + 1) 2^-27 <= 2^-15,
+// less than LSB_X / 2 = 2^-14: a crossing ON a column rounds to it exactly, any other ends within
+// 2^-14 + 2^-15 < 2^-13 of its exact value, on the same side of every column. So the video
+// channel's decisions (left X <= X_i < right X) are the exact ones at every raster 16..1024.
+// (With 10 / 18 fractional bits, crossings within 2^-11 of a column were rounded onto it.)
 struct SegmentFormatFine {
-  static constexpr const char* name = "x10s18i6";
-  using X = Fixed<24, 14, Quant::kRound, Overflow::kSat>;
-  using Slope = Fixed<38, 20, Quant::kRound, Overflow::kSat>;
+  static constexpr const char* name = "x13s26i6";
+  using X = Fixed<27, 14, Quant::kRound, Overflow::kSat>;
+  using Slope = Fixed<46, 20, Quant::kRound, Overflow::kSat>;
   using Intensity = UFixed<14, 8, Quant::kRound, Overflow::kSat>;
 };
 

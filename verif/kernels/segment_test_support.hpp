@@ -7,10 +7,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "hls/segment/records.hpp"
 #include "hls/segment/segment_arith.hpp"
@@ -343,6 +346,93 @@ struct ExactCoverage {
     return true;
   }
 };
+
+// ---- A random tiling of the screen -------------------------------------------------------------------
+
+// The screen square [0, 4095]^2 as a G x G grid of cells, each split along a random diagonal into two
+// triangles. Vertices are jittered (up to 0.9 of a cell; boundary vertices along their side only,
+// corners fixed); a fifth of the interior vertices instead go onto, or one unit off, the opposite
+// side of one of their triangles, which makes slivers and zero-area triangles. A move that would
+// turn a triangle over is halved until it does not (the grid position itself never does: the
+// vertex's neighbours were placed with it there). The result is a tiling: every triangle has a
+// non-negative shoelace area and the areas sum to the square's (checked).
+inline std::vector<IntPolygon> random_tiling(Rng& rng) {
+  const int G = int(between(rng, 2, 9)), cell = 4095 / G, V = G + 1;
+  std::vector<std::pair<int, int>> pos(std::size_t(V * V));
+  auto at = [&](int a, int b) -> std::pair<int, int>& { return pos[std::size_t(a * V + b)]; };
+  for (int a = 0; a <= G; ++a)
+    for (int b = 0; b <= G; ++b) at(a, b) = {a == G ? 4095 : a * cell, b == G ? 4095 : b * cell};
+  // Triangles as vertex indices (a * V + b); with Y down, (top-left, top-right, bottom-right) has a
+  // positive shoelace sum.
+  std::vector<std::array<int, 3>> tris;
+  for (int a = 0; a < G; ++a)
+    for (int b = 0; b < G; ++b) {
+      const int p00 = a * V + b, p10 = (a + 1) * V + b, p11 = (a + 1) * V + b + 1, p01 = a * V + b + 1;
+      if (below(rng, 2)) {
+        tris.push_back({p00, p10, p11});
+        tris.push_back({p00, p11, p01});
+      } else {
+        tris.push_back({p00, p10, p01});
+        tris.push_back({p10, p11, p01});
+      }
+    }
+  std::vector<std::vector<std::size_t>> incident(pos.size());
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int v : tris[t]) incident[std::size_t(v)].push_back(t);
+  auto area2 = [&](const std::array<int, 3>& t) {
+    std::int64_t s = 0;
+    for (int k = 0; k < 3; ++k) {
+      const auto& p = pos[std::size_t(t[std::size_t(k)])];
+      const auto& q = pos[std::size_t(t[std::size_t((k + 1) % 3)])];
+      s += std::int64_t(p.first) * q.second - std::int64_t(q.first) * p.second;
+    }
+    return s;
+  };
+  for (int a = 0; a <= G; ++a)
+    for (int b = 0; b <= G; ++b) {
+      const bool fix_x = a == 0 || a == G, fix_y = b == 0 || b == G;
+      if (fix_x && fix_y) continue;
+      const std::size_t v = std::size_t(a * V + b);
+      const auto home = pos[v];
+      std::pair<int, int> target = home;
+      if (!fix_x && !fix_y && below(rng, 5) == 0) {  // onto the opposite side of one of its triangles
+        const auto& t = tris[incident[v][std::size_t(below(rng, std::int64_t(incident[v].size())))]];
+        int sx = 0, sy = 0;
+        for (int w : t)
+          if (std::size_t(w) != v) sx += pos[std::size_t(w)].first, sy += pos[std::size_t(w)].second;
+        target = {sx / 2 + int(between(rng, -1, 1)), sy / 2 + int(between(rng, -1, 1))};
+      } else {
+        const int j = cell * 9 / 10;
+        if (!fix_x) target.first += int(between(rng, -j, j));
+        if (!fix_y) target.second += int(between(rng, -j, j));
+      }
+      for (int halving = 0; halving < 12; ++halving) {
+        pos[v] = {std::clamp(target.first, 0, 4095), std::clamp(target.second, 0, 4095)};
+        if (std::all_of(incident[v].begin(), incident[v].end(), [&](std::size_t t) { return area2(tris[t]) >= 0; })) break;
+        pos[v] = home;
+        target = {home.first + (target.first - home.first) / 2, home.second + (target.second - home.second) / 2};
+      }
+    }
+  std::vector<IntPolygon> out;
+  std::int64_t area = 0;
+  for (const auto& t : tris) {
+    IntPolygon p;
+    p.n = 3;
+    p.id = int(out.size());
+    for (int k = 0; k < 3; ++k) {
+      p.x[k] = pos[std::size_t(t[std::size_t(k)])].first;
+      p.y[k] = pos[std::size_t(t[std::size_t(k)])].second;
+      p.i[k] = int(below(rng, 256));
+      p.z[k] = 127 * 128 + int(below(rng, 256));
+    }
+    p.colour[0] = p.id & 255;
+    area += shoelace2(p);
+    EXPECT_GE(shoelace2(p), 0);
+    out.push_back(p);
+  }
+  EXPECT_EQ(area, std::int64_t(2) * 4095 * 4095);
+  return out;
+}
 
 // ---- Formats ---------------------------------------------------------------------------------------
 

@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "digest.hpp"
 #include "frame/screen_frame.hpp"
 #include "hls/formatter/formatter.hpp"
 #include "segment/formatter_twin.hpp"
@@ -710,12 +711,11 @@ TEST(Formatter, GoldenVectors) {
   for (int f = 0; f < 5; ++f) EXPECT_GE(fields[f], 50) << "XIDCZ"[f];
 }
 
-// A digest of the kernel's output on a fixed input stream, printed so that the native and the
-// SystemC-typed runs can be compared (they must print the same value).
+// A digest of the kernel's output on a fixed input stream (digest.hpp), printed as a DIGEST line:
+// the native and the SystemC-typed runs must print the same one (ctest kernel_bits_identical).
 TEST(Formatter, OutputDigest) {
   std::mt19937_64 rng(2024);
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](std::uint64_t v) { h = (h ^ v) * 1099511628211ull; };
+  kernel_test::Digest d;
   for (int t = 0; t < 2000; ++t) {
     RawPrimitive r;
     r.is_light = (t % 5) == 0;
@@ -728,17 +728,16 @@ TEST(Formatter, OutputDigest) {
     FormattedPrimitive out;
     formatter_top(r, out);
     for (int k = 0; k < kMaxVertices; ++k) {
-      mix(out.v[k].x.value());
-      mix(out.v[k].y.value());
-      mix(out.v[k].i.value());
-      mix(out.v[k].z.bits.value());
+      d.add(out.v[k].x.value());
+      d.add(out.v[k].y.value());
+      d.add(out.v[k].i.value());
+      d.add(out.v[k].z.bits.value());
     }
-    mix(out.d.value());
-    for (int c = 0; c < 3; ++c) mix(out.colour[c].value());
-    mix(out.n.value() | (out.id.value() << 8) | (std::uint64_t(out.is_light) << 24));
+    d.add(out.d.value());
+    for (int c = 0; c < 3; ++c) d.add(out.colour[c].value());
+    d.add(out.n.value() | (out.id.value() << 8) | (std::uint64_t(out.is_light) << 24));
   }
-  std::printf("kernel digest formatter %016" PRIx64 "\n", h);
-  RecordProperty("digest", std::to_string(h));
+  kernel_test::print_digest("formatter", d);
 }
 
 }  // namespace

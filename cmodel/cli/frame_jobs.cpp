@@ -1,0 +1,74 @@
+#include "cli/frame_jobs.hpp"
+
+#include <algorithm>
+
+#include "cli/cli_common.hpp"
+#include "common/error.hpp"
+#include "common/json_reader.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace cig::cli {
+
+EngineOptions reference_options(const std::string& reference) {
+  if (reference != "float" && reference != "float-snap")
+    throw InputError("", "--reference", "'" + reference + "' is neither float nor float-snap");
+  EngineOptions o;
+  o.snap = reference == "float-snap";
+  return o;
+}
+
+FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
+                          int channel) {
+  FrameJobs j;
+  const std::string text = read_text_file(input);
+  if (text.find("\"cig-polys\"") != std::string::npos) {
+    j.list_.push_back(parse_polygon_list(text, input));
+    j.jobs_.push_back({j.list_[0].frame, j.list_[0].channel});
+    return j;
+  }
+  j.scene_ = std::make_unique<Scene>(parse_scene(text, input));
+  int a, b;
+  frame_range(frames_text, frame_k, frame_given, j.scene_->frame_count(), input, a, b);
+  if (channel >= int(j.scene_->channels.size()))
+    throw InputError("", "--channel", "channel " + std::to_string(channel) + " does not exist");
+  for (int f = a; f <= b; ++f)
+    for (int c = 0; c < int(j.scene_->channels.size()); ++c)
+      if (channel < 0 || c == channel) j.jobs_.push_back({f, c});
+  j.frames_ = b - a + 1;
+  j.channels_ = channel < 0 ? int(j.scene_->channels.size()) : 1;
+  j.pipeline_ = std::make_unique<ScenePipeline>(*j.scene_);
+  return j;
+}
+
+ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
+  if (!pipeline_) return list_[0];
+  nlohmann::ordered_json unused;
+  return pipeline_->geometry(jobs_[k].first, jobs_[k].second, unused);
+}
+
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {
+  return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids),
+          differing_ids(got.ids, reference.ids)};
+}
+
+nlohmann::ordered_json comparison_json(const Comparison& c) {
+  return {{"frame", c.frame},
+          {"channel", c.channel},
+          {"psnr", c.error.psnr()},
+          {"max_abs", {c.error.max_abs[0], c.error.max_abs[1], c.error.max_abs[2]}},
+          {"pixels_over_2lsb", c.error.pixels_over_2lsb},
+          {"ids_differ", c.ids_differ}};
+}
+
+void ComparisonTotals::add(const Comparison& c) {
+  all.add(c.error);
+  ++images;
+  ids_differ += c.ids_differ;
+  if (c.error.psnr() < min_psnr) {
+    min_psnr = c.error.psnr();
+    worst_frame = c.frame;
+    worst_channel = c.channel;
+  }
+}
+
+}  // namespace cig::cli

@@ -1,0 +1,64 @@
+// What `cig compare` and `cig sweep` share: the images they work on (a polygon list, or a scene's
+// frames x channels through stages A and B), the reference they compare with, and the comparison
+// of one image (PSNR, maximum absolute error, pixels off by more than 2 LSB, ids) with its totals.
+#pragma once
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/engine.hpp"
+#include "image/image_compare.hpp"
+#include "pipeline/scene_pipeline.hpp"
+
+namespace cig::cli {
+
+// --reference float | float-snap: the float engine, unsnapped or snapped to the formatter grid.
+EngineOptions reference_options(const std::string& reference);
+
+// The images of an input: a polygon list is one image; a scene gives frames A..B (--frames A:B,
+// --frame K, or frame 0) x channels (all, or --channel C). Checked when loaded (InputError).
+class FrameJobs {
+ public:
+  static FrameJobs load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
+                        int channel);
+  std::size_t size() const { return jobs_.size(); }
+  int frame(std::size_t k) const { return jobs_[k].first; }
+  int channel(std::size_t k) const { return jobs_[k].second; }
+  int frames() const { return frames_; }      // distinct frames
+  int channels() const { return channels_; }  // channels per frame
+  // The polygon list the engines receive for image k (stages A and B for a scene; thread-safe).
+  ScreenFrame screen_frame(std::size_t k) const;
+
+ private:
+  std::vector<ScreenFrame> list_;  // polygon-list input
+  std::unique_ptr<Scene> scene_;
+  std::unique_ptr<ScenePipeline> pipeline_;
+  std::vector<std::pair<int, int>> jobs_;  // (frame, channel)
+  int frames_ = 1, channels_ = 1;
+};
+
+// One image against the reference.
+struct Comparison {
+  int frame = 0, channel = 0;
+  ImageError error;
+  long ids_differ = 0;
+};
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference);
+nlohmann::ordered_json comparison_json(const Comparison& c);
+
+// Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.
+struct ComparisonTotals {
+  ImageError all;
+  long images = 0, ids_differ = 0;
+  double min_psnr = 1e9;
+  int worst_frame = 0, worst_channel = 0;
+  void add(const Comparison& c);
+  int max_abs() const { return std::max({all.max_abs[0], all.max_abs[1], all.max_abs[2]}); }
+};
+
+}  // namespace cig::cli

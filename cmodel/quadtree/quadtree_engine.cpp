@@ -1,0 +1,217 @@
+#include "quadtree/quadtree_engine.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "common/error.hpp"
+#include "quadtree/quadtree_frame.hpp"
+
+namespace cig {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+struct QuadOptions {
+  std::string arch = "np";
+  bool masks = true;
+  std::string format = "fine";
+  int fifo = 2;
+  double clock_mhz = 100;
+};
+
+constexpr double kFrameBudgetMs = 20.0;  // seed 004: t_0 = 20 ms (50 Hz)
+
+template <class P>
+class QuadPipeline {
+ public:
+  QuadPipeline(const QuadOptions& o, const char* name, const char* format)
+      : options_(o), name_(name), format_(format), masks_(std::make_unique<hls::MaskMemory>()) {}
+
+  // The raster's level count n and the architecture for it (InputError when they do not fit).
+  quad::Architecture check_raster(int n_pix) const {
+    const int log2 = int(std::lround(std::log2(n_pix)));
+    if (log2 < hls::kQuadMinRasterLog2 || log2 > hls::kQuadMaxRasterLog2 || (1 << log2) != n_pix)
+      throw InputError("", "raster", "the quadtree engine renders rasters of 16 to 1024 lines, not " + std::to_string(n_pix));
+    return quad::Architecture::parse(options_.arch, log2);
+  }
+
+  EngineRun render(const ScreenFrame& frame) {
+    const quad::Architecture arch = check_raster(frame.raster);
+    const int log2 = arch.raster_log2;
+    if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds))
+      throw InputError("", "polygons", "the quadtree engine takes at most 65536 polygons per channel");
+    quad::ArchConfig cfg;
+    cfg.fifo_depth = options_.fifo;
+    cfg.masks = options_.masks;
+    EngineRun run;
+    auto& rep = run.report;
+    rep["engine"] = name_;
+    rep["format"] = format_;
+    rep["architecture"] = arch.text;
+    rep["masks"] = options_.masks;
+    rep["fifo_depth"] = options_.fifo;
+
+    // Formatter and setup, in priority order (front to back).
+    auto t0 = Clock::now();
+    quad::FrontEndStats fe;
+    const std::vector<hls::QuadWindow<P>> roots = quad::front_end<P>(frame, log2, fe);
+    const double setup_ms = ms_since(t0);
+
+    // Tables and the light point unit (lights rasterised before the polygons).
+    t0 = Clock::now();
+    pixels_.begin(frame, log2);
+    const double lights_ms = ms_since(t0);
+
+    // The architecture, clock by clock.
+    t0 = Clock::now();
+    hls::mask_clear(*masks_, log2);
+    quad::ArchModel<P> model(arch, cfg);
+    const quad::ArchStats st = model.run(roots, *masks_, pixels_);
+    const double raster_ms = ms_since(t0);
+
+    // Resolve.
+    t0 = Clock::now();
+    pixels_.resolve(run.out.image, run.out.ids);
+    const double resolve_ms = ms_since(t0);
+
+    // Report.
+    rep["polygons"] = frame.polygons.size();
+    rep["polygons_degenerate"] = fe.degenerate;
+    rep["polygons_split"] = fe.split;
+    rep["pieces"] = roots.size();
+    rep["bbox_edges"] = fe.bbox_edges;
+    rep["light_points"] = frame.light_points.size();
+    rep["light_samples"] = pixels_.light_samples();
+    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+    for (int l = 0; l <= log2; ++l) {
+      const quad::LevelStats& ls = st.level[std::size_t(l)];
+      levels.push_back({{"level", l},
+                        {"windows_loaded", ls.loaded},
+                        {"windows_all_masked", ls.loaded_all_masked},
+                        {"children_tested", ls.tested},
+                        {"children_masked", ls.masked},
+                        {"children_covered", ls.covered},
+                        {"children_full_opaque", ls.full_opaque}});
+    }
+    rep["levels"] = levels;
+    // Pieces that met a mask and never reached the pixels: hidden, discarded at that level.
+    std::vector<long> died(std::size_t(log2) + 1, 0);
+    long hidden = 0;
+    for (const quad::PieceStats& ps : st.pieces)
+      if (ps.met_mask && ps.pixel_records == 0) {
+        ++died[std::size_t(ps.deepest_level)];
+        ++hidden;
+      }
+    rep["pieces_hidden_by_masks"] = hidden;
+    rep["pieces_hidden_by_level"] = died;
+    rep["pixel_records"] = st.pixel_records;
+    rep["pixels_full"] = st.pixels_full;
+    rep["mask_sets"] = st.mask_sets;
+    rep["mask_words_full"] = st.mask_words_full;
+    const double frame_ms = double(st.cycles) / (options_.clock_mhz * 1e3);
+    long long busy = 0;
+    for (long long b : st.pe_busy_cycles) busy += b;
+    nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
+    for (std::size_t s = 0; s < arch.stages.size(); ++s) {
+      long long sb = 0, ss = 0, pes = 0;
+      for (int p = 0; p < model.pe_count(); ++p)
+        if (model.pe_stage(p) == int(s)) {
+          sb += st.pe_busy_cycles[std::size_t(p)];
+          ss += st.pe_stall_cycles[std::size_t(p)];
+          ++pes;
+        }
+      const quad::ArchStage& as = arch.stages[s];
+      per_stage.push_back({{"kind", std::string(1, as.kind)},
+                           {"levels", std::to_string(as.first_level) + ".." + std::to_string(as.last_level)},
+                           {"pes", pes},
+                           {"busy_cycles", sb},
+                           {"stall_cycles", ss},
+                           {"utilisation", st.cycles > 0 ? double(sb) / (double(st.cycles) * double(pes)) : 0.0}});
+    }
+    rep["cycles"] = {{"frame", st.cycles},
+                     {"per_piece", roots.empty() ? 0.0 : double(st.cycles) / double(roots.size())},
+                     {"clock_mhz", options_.clock_mhz},
+                     {"frame_ms", frame_ms},
+                     {"budget_ms", kFrameBudgetMs},
+                     {"fits_budget", frame_ms <= kFrameBudgetMs},
+                     {"pes", model.pe_count()},
+                     {"pe_utilisation", st.cycles > 0 ? double(busy) / (double(st.cycles) * model.pe_count()) : 0.0},
+                     {"input_wait_cycles", st.input_wait_cycles},
+                     {"stages", per_stage}};
+    rep["setup_ms"] = setup_ms;
+    rep["lights_ms"] = lights_ms;
+    rep["raster_ms"] = raster_ms;
+    rep["resolve_ms"] = resolve_ms;
+    return run;
+  }
+
+ private:
+  QuadOptions options_;
+  const char* name_;
+  const char* format_;
+  std::unique_ptr<hls::MaskMemory> masks_;
+  quad::PixelFrame<P> pixels_;
+};
+
+template <class P>
+class QuadEngine : public RasterEngine {
+ public:
+  QuadEngine(const QuadOptions& o, const char* name, const char* format) : name_(name), pipeline_(o, name, format) {}
+  const char* name() const override { return name_; }
+  EngineRun render(const ScreenFrame& frame) override { return pipeline_.render(frame); }
+  void check_raster(int raster) const override { pipeline_.check_raster(raster); }
+
+ private:
+  const char* name_;
+  QuadPipeline<P> pipeline_;
+};
+
+}  // namespace
+
+std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin) {
+  const char* engine = twin ? "quadtree-double" : "quadtree";
+  if (options.snap)
+    throw InputError("", "--snap", "--snap applies to the float engine; the quadtree engine's formatter snaps by itself");
+  QuadOptions o;
+  for (const auto& [key, value] : options.params) {
+    if (key == "arch") {
+      quad::Architecture::parse(value, 0, "--arch");  // the syntax; the level count is checked per frame
+      o.arch = value;
+    } else if (key == "masks") {
+      if (value != "on" && value != "off") throw InputError("", "--masks", "must be on or off, not '" + value + "'");
+      o.masks = value == "on";
+    } else if (key == "format" && !twin) {
+      if (value != "coarse" && value != "medium" && value != "fine")
+        throw InputError("", "--engine-opt", "format '" + value + "' is not one of coarse, medium, fine");
+      o.format = value;
+    } else if (key == "fifo") {
+      char* end = nullptr;
+      const long v = std::strtol(value.c_str(), &end, 10);
+      if (value.empty() || *end != '\0' || v < 1 || v > 64) throw InputError("", "--engine-opt", "fifo must be an integer 1..64");
+      o.fifo = int(v);
+    } else if (key == "clock") {
+      char* end = nullptr;
+      const double v = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0' || !(v > 0) || !(v < 1e6)) throw InputError("", "--engine-opt", "clock must be a frequency in MHz, > 0");
+      o.clock_mhz = v;
+    } else {
+      throw InputError("", "--engine-opt", std::string("engine '") + engine + "' takes no option '" + key +
+                                               (twin ? "' (known: arch, masks, fifo, clock)" : "' (known: arch, masks, format, fifo, clock)"));
+    }
+  }
+  if (twin) return std::make_unique<QuadEngine<QuadDoubleArith>>(o, engine, "double");
+  if (o.format == "coarse")
+    return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatCoarse>>>(o, engine, hls::QuadFormatCoarse::name);
+  if (o.format == "medium")
+    return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatMedium>>>(o, engine, hls::QuadFormatMedium::name);
+  return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatFine>>>(o, engine, hls::QuadFormatFine::name);
+}
+
+}  // namespace cig

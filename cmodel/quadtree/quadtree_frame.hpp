@@ -1,0 +1,230 @@
+// The recursive-subdivision raster processor's frame around the PEs, shared by the engine
+// (quadtree_engine.cpp) and the co-simulation harness (verif/cosim):
+//   * the front end: formatter kernel -> setup kernel, polygon by polygon in priority order,
+//     giving the pieces' level-0 windows (the polygon input port's stream);
+//   * the pixel frame: the pixel processor kernel's per-pixel state, its tables (fog by the e8m7
+//     code of 1/Z, fog colour, background), the light point unit's per-pixel covers, the
+//     per-sample owners (for the id buffer) and the resolve. It is the PixelSink the architecture
+//     model drives, and it provides the tables the RTL is loaded with.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <type_traits>
+#include <vector>
+
+#include "frame/screen_frame.hpp"
+#include "hls/formatter/formatter.hpp"
+#include "hls/quadtree/pixel_processor.hpp"
+#include "hls/quadtree/setup.hpp"
+#include "hls/segment/light_segments.hpp"
+#include "image/image.hpp"
+#include "quadtree/arch_model.hpp"
+#include "quadtree/quadtree_double_arith.hpp"
+#include "reference/reference_raster.hpp"
+#include "segment/formatter_twin.hpp"
+
+namespace cig::quad {
+
+template <class P>
+constexpr bool kIsTwin = std::is_same_v<P, QuadDoubleArith>;
+
+// The setup's input for one polygon: the formatter kernel's output; the twin keeps the formatter's
+// positions (coverage is exact) and takes the unquantized I and Z of the formatter twin.
+template <class P>
+void setup_input(const ScreenPolygon& p, std::uint16_t id, hls::QuadPrimitiveInput<P>& in) {
+  hls::FormattedPrimitive f;
+  hls::formatter_top(raw_from_polygon(p, id), f);
+  if constexpr (kIsTwin<P>) {
+    const TwinPrimitive t = formatter_twin(p, id);
+    in.n = f.n;
+    for (int k = 0; k < hls::kMaxVertices; ++k) {
+      in.v[k].x = f.v[k].x;
+      in.v[k].y = f.v[k].y;
+      in.v[k].i = k < t.n ? t.v[k].i : 0.0;
+      in.v[k].z = k < t.n ? t.v[k].z : 1.0;
+    }
+    for (int c = 0; c < 3; ++c) in.colour[c] = f.colour[c];
+    in.opaque = f.opaque;
+    in.id = f.id;
+  } else {
+    hls::quad_input_from_formatted(f, in);
+  }
+}
+
+struct FrontEndStats {
+  long degenerate = 0, split = 0, bbox_edges = 0;
+};
+
+// The pieces' level-0 windows of a frame, in priority order (front to back).
+template <class P>
+std::vector<hls::QuadWindow<P>> front_end(const ScreenFrame& frame, int raster_log2, FrontEndStats& st) {
+  std::vector<hls::QuadWindow<P>> roots;
+  roots.reserve(frame.polygons.size());
+  hls::QuadSetup<P> setup;
+  hls::QuadPrimitiveInput<P> in;
+  for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
+    setup_input<P>(frame.polygons[pi], std::uint16_t(pi), in);
+    hls::quadtree_setup(in, raster_log2, setup);
+    const int pieces = int(setup.pieces.value());
+    if (pieces == 0) ++st.degenerate;
+    if (pieces > 1) ++st.split;
+    for (int k = 0; k < pieces; ++k) {
+      roots.push_back(setup.root[k]);
+      st.bbox_edges += long(setup.bbox_edges[k].value());
+    }
+  }
+  return roots;
+}
+
+template <class P>
+class PixelFrame final : public PixelSink<P> {
+ public:
+  PixelFrame() : tables_(std::make_unique<hls::QuadPixelTables<P>>()) {}
+
+  // Loads the tables and the light covers of a frame and clears the pixel states.
+  void begin(const ScreenFrame& frame, int raster_log2) {
+    n_ = 1 << raster_log2;
+    log2_ = raster_log2;
+    fill_fog(frame.fog);
+    for (int c = 0; c < 3; ++c) {
+      tables_->fog_colour[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.fog.colour[c], 0.0, 1.0) * 255)));
+      tables_->background[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.background[c], 0.0, 1.0) * 255)));
+    }
+    const std::size_t pixels = std::size_t(n_) * std::size_t(n_);
+    states_.assign(pixels, hls::QuadPixelState<P>());
+    owners_.assign(pixels * 16, -1);
+    cover_index_.assign(pixels, -1);
+    covers_.clear();
+    light_samples_ = rasterise_lights(frame);
+  }
+
+  unsigned pixel(int, const QuadItem<P>& it, bool& became_full) override {
+    const int x = int(it.w.x.value()), y = int(it.w.y.value());
+    const std::size_t pix = std::size_t(y) * std::size_t(n_) + std::size_t(x);
+    const unsigned f = unsigned(hls::quad_pixel_process(it.w, it.samples, *tables_, cover(pix), states_[pix]).value());
+    became_full = f != 0 && states_[pix].owned.value() == 0xFFFFu;
+    for (int s = 0; s < 16; ++s)
+      if ((f >> s) & 1u) owners_[pix * 16 + std::size_t(s)] = std::int32_t(it.w.poly.id.value());
+    return f;
+  }
+
+  // The resolved image and the per-pixel ids (majority owner).
+  void resolve(Image& image, IdBuffer& ids) const {
+    image = Image(n_, n_);
+    ids = IdBuffer(n_, n_);
+    std::vector<std::int32_t> own(16);
+    for (int py = 0; py < n_; ++py)
+      for (int px = 0; px < n_; ++px) {
+        const std::size_t pix = std::size_t(py) * std::size_t(n_) + std::size_t(px);
+        hls::UInt<8> rgb[3];
+        hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb);
+        std::uint8_t* dst = image.at(px, py);
+        for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(rgb[c].value());
+        std::copy(owners_.begin() + std::ptrdiff_t(pix * 16), owners_.begin() + std::ptrdiff_t(pix * 16 + 16), own.begin());
+        ids.id[pix] = majority_owner(own.data(), 16);
+      }
+  }
+
+  const hls::QuadPixelTables<P>& tables() const { return *tables_; }
+  // Light covers: per pixel the index of its cover (-1: none).
+  const std::vector<int>& cover_index() const { return cover_index_; }
+  const std::vector<hls::QuadLightCover<P>>& covers() const { return covers_; }
+  long light_samples() const { return light_samples_; }
+
+ private:
+  const hls::QuadLightCover<P>& cover(std::size_t pix) const {
+    static const hls::QuadLightCover<P> none{};
+    const int ci = cover_index_[pix];
+    return ci >= 0 ? covers_[std::size_t(ci)] : none;
+  }
+
+  // The fixed pixel processor looks fog up by the e8m7 code of 1/Z (host fill, per frame).
+  void fill_fog(const Fog& fog) {
+    if constexpr (kIsTwin<P>) {
+      tables_->fog.start = fog.start;
+      tables_->fog.end = fog.end;
+    } else {
+      for (int code = 0; code < hls::kFogTableSize; ++code) {
+        hls::ZFloat w;
+        w.bits = hls::UInt<15>(code);
+        const double z = 1.0 / zfloat_to_double(w);
+        const double f = std::clamp((z - fog.start) / (fog.end - fog.start), 0.0, 1.0);
+        tables_->fog.f[code] = hls::FogFactor(hls::UFixed<9, 1>::from_raw_value(std::uint64_t(std::lround(f * 256))));
+      }
+    }
+  }
+
+  // A light's colour at its samples: colour x I, fog by its Z (the pixel processor's arithmetic).
+  void light_colour(const ScreenLightPoint& l, const hls::FormattedPrimitive& f, typename P::Sample (&out)[3]) const {
+    const hls::QuadPixelTables<P>& t = *tables_;
+    if constexpr (kIsTwin<P>) {
+      const TwinPrimitive tw = formatter_twin(l, 0);
+      const double fog = P::fog_factor(t.fog, 1.0 / tw.v[0].z, hls::Int<10>(0));
+      for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], tw.v[0].i, fog, t.fog_colour[c]);
+    } else {
+      const int e = P::depth_exponent(f.v[0].z);
+      const typename P::Value w = P::inverse_depth_value(f.v[0].z, e);
+      const typename P::Param v = typename P::Param(w) << P::G;
+      const hls::FogFactor fog = P::fog_factor(t.fog, v, hls::Int<10>(P::w_exponent(e)));
+      const typename P::Intensity in(hls::UFixed<8, 8>::from_raw(f.v[0].i));
+      for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], in, fog, t.fog_colour[c]);
+    }
+  }
+
+  // The light point unit: every light's samples (the segment processor's coding table and column
+  // rule: the float reference's disc, verif/kernels/test_segment_arith.cpp) into per-pixel covers;
+  // a sample keeps the light with the earliest priority position (ties: the earlier light).
+  long rasterise_lights(const ScreenFrame& frame) {
+    using SegP = hls::DefaultSegmentArith;
+    const hls::RowGeometry g = hls::RowGeometry::for_raster(log2_);
+    std::vector<std::size_t> order(frame.light_points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return frame.light_points[a].priority < frame.light_points[b].priority;
+    });
+    long samples = 0;
+    hls::Segment<SegP> segs[hls::kMaxLightSegments];
+    for (std::size_t li : order) {
+      const ScreenLightPoint& l = frame.light_points[li];
+      hls::FormattedPrimitive f;
+      hls::formatter_top(raw_from_light(l, std::uint16_t(li)), f);
+      typename P::Sample colour[3];
+      light_colour(l, f, colour);
+      const int k = hls::generate_light_segments<SegP>(f, log2_, hls::UInt<3>(0), segs);
+      for (int s = 0; s < k; ++s) {
+        const int r = int(segs[s].row_first.value());
+        const int row = 4 * int(segs[s].line.value()) + r;
+        const int i0 = std::max(0, SegP::first_column_at_or_after(g, segs[s].xl[r]));
+        const int i1 = std::min(4 * n_ - 1, SegP::first_column_at_or_after(g, segs[s].xr[r]) - 1);
+        for (int i = i0; i <= i1; ++i) {
+          const std::size_t pix = std::size_t(row / 4) * std::size_t(n_) + std::size_t(i / 4);
+          if (cover_index_[pix] < 0) {
+            cover_index_[pix] = int(covers_.size());
+            covers_.push_back(hls::QuadLightCover<P>{});
+          }
+          hls::QuadLightCover<P>& cv = covers_[std::size_t(cover_index_[pix])];
+          const int bit = 4 * (row & 3) + (i & 3);
+          if (cv.mask.bit(bit)) continue;  // an earlier light holds the sample
+          cv.mask = hls::UInt<16>(cv.mask.value() | (1u << bit));
+          cv.priority[bit] = hls::UInt<17>(std::uint64_t(std::max(0, l.priority)));
+          for (int c = 0; c < 3; ++c) cv.colour[bit][c] = colour[c];
+          ++samples;
+        }
+      }
+    }
+    return samples;
+  }
+
+  int n_ = 0, log2_ = 0;
+  std::unique_ptr<hls::QuadPixelTables<P>> tables_;
+  std::vector<hls::QuadPixelState<P>> states_;
+  std::vector<std::int32_t> owners_;
+  std::vector<int> cover_index_;
+  std::vector<hls::QuadLightCover<P>> covers_;
+  long light_samples_ = 0;
+};
+
+}  // namespace cig::quad

@@ -1,0 +1,99 @@
+// Pixel processor of the recursive-subdivision raster processor (SPEC E; seed 004, Fig. 1:
+// "final computations, filtering"): takes the pixel-level records the PEs emit, front to back,
+// and keeps per pixel the samples already owned and the running sum of their colours.
+//
+// A record's samples that no earlier polygon owns become this polygon's: each gets I and W = 1/Z
+// at its own position from the pixel's top-left value and the plane's gradients (16 sample lanes:
+// f + D di + E dj), colour x I, fog by 1/Z through the fog table, and is added to the pixel's sum
+// (exact: 16 samples of 8 fractional bits fit UFixed<20, 12>), which is the box filter's sum. The
+// pixel is full, and its bit in the level n-1 mask can be set, when all 16 samples are owned.
+//
+// Light points (SPEC B) are not polygons: the light point unit rasterises them before the frame's
+// polygons into a per-pixel cover: for every sample, the light with the earliest priority
+// position that covers it, and that light's colour (colour x I, fog by its Z; cmodel). A light
+// with priority position p ranks just before polygon p (cmodel/frame/screen_frame.hpp), so when
+// polygon q first owns a sample the light shows instead if p <= q; a sample no polygon owns shows
+// its light, or the background. This is the same visibility as processing the lights in the
+// priority stream (the segment processor's video channel), without their travelling through the
+// PEs.
+#pragma once
+
+#include "hls/quadtree/quadtree_arith.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+template <class P>
+struct QuadPixelState {
+  UInt<16> owned;                 // samples some polygon owns
+  typename P::Accum sum[3];       // the owned samples' colours, summed
+};
+
+template <class P>
+struct QuadLightCover {
+  UInt<16> mask;                  // samples a light covers
+  UInt<17> priority[kSamplesPerPixel];                 // that light's priority position
+  typename P::Sample colour[kSamplesPerPixel][3];      // its colour at the sample
+};
+
+template <class P>
+struct QuadPixelTables {
+  typename P::FogTable fog;       // indexed by the e8m7 code of 1/Z (fixed policy)
+  SampleLevel fog_colour[3];
+  SampleLevel background[3];
+};
+
+template <class P>
+void quad_pixel_clear(QuadPixelState<P>& st) {
+  st.owned = UInt<16>(0);
+  for (int c = 0; c < 3; ++c) st.sum[c] = typename P::Accum();
+}
+
+// One pixel record (a level-n window and its covered samples); returns the samples it took.
+template <class P>
+UInt<16> quad_pixel_process(const QuadWindow<P>& px, const UInt<16>& samples, const QuadPixelTables<P>& t,
+                            const QuadLightCover<P>& lights, QuadPixelState<P>& st) {
+  const unsigned fresh = unsigned(samples.value()) & ~unsigned(st.owned.value()) & 0xFFFFu;
+  const QuadPolygon<P>& poly = px.poly;
+  for (int s = 0; s < kSamplesPerPixel; ++s) {
+    if (((fresh >> s) & 1u) == 0) continue;
+    const int di = s & 3, dj = s >> 2;
+    const bool light_shows = lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value();
+    typename P::Sample colour[3];
+    if (light_shows) {
+      for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
+    } else {
+      const typename P::Param vi = P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
+      const typename P::Param vw = P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth], poly.dp_dj[kParamInverseDepth], di, dj);
+      const typename P::Intensity in = P::intensity(vi);
+      const typename P::FogFactorType f = P::fog_factor(t.fog, vw, poly.w_exponent);
+      for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
+    }
+    for (int c = 0; c < 3; ++c) st.sum[c] = P::accumulate(st.sum[c], colour[c]);
+  }
+  st.owned = UInt<16>(st.owned.value() | fresh);
+  return UInt<16>(fresh);
+}
+
+// The pixel's final colour: owned samples as summed, the others show their light or the
+// background; the box filter's mean, rounded.
+template <class P>
+void quad_pixel_resolve(const QuadPixelState<P>& st, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
+                        UInt<8> (&rgb)[3]) {
+  typename P::Accum sum[3];
+  for (int c = 0; c < 3; ++c) sum[c] = st.sum[c];
+  for (int s = 0; s < kSamplesPerPixel; ++s) {
+    if (st.owned.bit(s)) continue;
+    for (int c = 0; c < 3; ++c)
+      sum[c] = P::accumulate(sum[c], lights.mask.bit(s) ? lights.colour[s][c] : P::level_sample(t.background[c]));
+  }
+  for (int c = 0; c < 3; ++c) rgb[c] = P::resolve(sum[c]);
+}
+
+// Top function (HLS): one pixel record into the pixel's state, default format.
+inline UInt<16> quadtree_pixel_top(const QuadWindow<DefaultQuadArith>& px, UInt<16> samples,
+                                   const QuadPixelTables<DefaultQuadArith>& t, const QuadLightCover<DefaultQuadArith>& lights,
+                                   QuadPixelState<DefaultQuadArith>& st) {
+  return quad_pixel_process(px, samples, t, lights, st);
+}
+
+CIG_HLS_END_NAMESPACE
