@@ -59,7 +59,7 @@ int CompareCommand::run() {
         const ScreenFrame f = jobs.screen_frame(k);
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
-        rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
+        rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out, &f);
         if (!out_dir.empty())
           write_png((std::filesystem::path(out_dir) / (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) +
                                                        "_diff.png")).string(),
@@ -100,7 +100,10 @@ int CompareCommand::run() {
             << " dB over all pixels, lowest " << totals.min_psnr << " dB (frame " << totals.worst_frame << " channel "
             << totals.worst_channel << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B "
             << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
-            << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n";
+            << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
+            << "      of those, " << totals.ids_priority_vs_depth
+            << " where the engine's polygon precedes the reference's in priority order but lies behind it"
+               " (priority order against the z-buffer)\n";
   const double share = all.sum_squared > 0 ? 100.0 * all.sum_squared_ids_differ / all.sum_squared : 0.0;
   std::cout << "      error attribution: " << std::setprecision(1) << share
             << " % of the squared error lies in the " << all.pixels_ids_differ
@@ -111,6 +114,7 @@ int CompareCommand::run() {
   rep["pixels"] = all.pixels;
   rep["pixels_over_2lsb"] = all.pixels_over_2lsb;
   rep["ids_differ"] = totals.ids_differ;
+  rep["ids_priority_vs_depth"] = totals.ids_priority_vs_depth;
   rep["squared_error_share_ids_differ"] = all.sum_squared > 0 ? all.sum_squared_ids_differ / all.sum_squared : 0.0;
   if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
   return 0;

@@ -46,9 +46,10 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
   return pipeline_->geometry(jobs_[k].first, jobs_[k].second, unused);
 }
 
-Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {
-  return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids),
-          differing_ids(got.ids, reference.ids)};
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference, const ScreenFrame* polygons) {
+  Comparison c{frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), 0};
+  if (polygons && c.ids_differ > 0) c.ids_priority_vs_depth = priority_depth_disagreements(*polygons, got.ids.id, reference.ids.id);
+  return c;
 }
 
 nlohmann::ordered_json comparison_json(const Comparison& c) {
@@ -57,13 +58,15 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
           {"psnr", c.error.psnr()},
           {"max_abs", {c.error.max_abs[0], c.error.max_abs[1], c.error.max_abs[2]}},
           {"pixels_over_2lsb", c.error.pixels_over_2lsb},
-          {"ids_differ", c.ids_differ}};
+          {"ids_differ", c.ids_differ},
+          {"ids_priority_vs_depth", c.ids_priority_vs_depth}};
 }
 
 void ComparisonTotals::add(const Comparison& c) {
   all.add(c.error);
   ++images;
   ids_differ += c.ids_differ;
+  ids_priority_vs_depth += c.ids_priority_vs_depth;
   if (c.error.psnr() < min_psnr) {
     min_psnr = c.error.psnr();
     worst_frame = c.frame;

@@ -47,14 +47,16 @@ struct Comparison {
   int frame = 0, channel = 0;
   ImageError error;
   long ids_differ = 0;
+  long ids_priority_vs_depth = 0;  // of those: the engine's polygon precedes the reference's in priority, lies behind it
 };
-Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference);
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference,
+                       const ScreenFrame* polygons = nullptr);
 nlohmann::ordered_json comparison_json(const Comparison& c);
 
 // Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.
 struct ComparisonTotals {
   ImageError all;
-  long images = 0, ids_differ = 0;
+  long images = 0, ids_differ = 0, ids_priority_vs_depth = 0;
   double min_psnr = 1e9;
   int worst_frame = 0, worst_channel = 0;
   void add(const Comparison& c);

@@ -112,6 +112,7 @@ class QuadPipeline {
     rep["pieces_hidden_by_masks"] = hidden;
     rep["pieces_hidden_by_level"] = died;
     rep["pixel_records"] = st.pixel_records;
+    rep["samples_written"] = pixels_.samples_written();
     rep["pixels_full"] = st.pixels_full;
     rep["mask_sets"] = st.mask_sets;
     rep["mask_words_full"] = st.mask_words_full;

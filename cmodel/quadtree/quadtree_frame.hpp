@@ -99,6 +99,7 @@ class PixelFrame final : public PixelSink<P> {
     cover_index_.assign(pixels, -1);
     covers_.clear();
     light_samples_ = rasterise_lights(frame);
+    samples_written_ = 0;
   }
 
   unsigned pixel(int, const QuadItem<P>& it, bool& became_full) override {
@@ -106,6 +107,7 @@ class PixelFrame final : public PixelSink<P> {
     const std::size_t pix = std::size_t(y) * std::size_t(n_) + std::size_t(x);
     const unsigned f = unsigned(hls::quad_pixel_process(it.w, it.samples, *tables_, cover(pix), states_[pix]).value());
     became_full = f != 0 && states_[pix].owned.value() == 0xFFFFu;
+    samples_written_ += __builtin_popcount(f);
     for (int s = 0; s < 16; ++s)
       if ((f >> s) & 1u) owners_[pix * 16 + std::size_t(s)] = std::int32_t(it.w.poly.id.value());
     return f;
@@ -133,6 +135,7 @@ class PixelFrame final : public PixelSink<P> {
   const std::vector<int>& cover_index() const { return cover_index_; }
   const std::vector<hls::QuadLightCover<P>>& covers() const { return covers_; }
   long light_samples() const { return light_samples_; }
+  long long samples_written() const { return samples_written_; }
 
  private:
   const hls::QuadLightCover<P>& cover(std::size_t pix) const {
@@ -225,6 +228,7 @@ class PixelFrame final : public PixelSink<P> {
   std::vector<int> cover_index_;
   std::vector<hls::QuadLightCover<P>> covers_;
   long light_samples_ = 0;
+  long long samples_written_ = 0;  // samples polygons took (the pixel processor's work)
 };
 
 }  // namespace cig::quad
