@@ -8,6 +8,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev
   libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
   assimp-testmodels               # real OBJ models for the loader tests
+  verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -23,7 +23,7 @@ void CompareCommand::add_to(CLI::App& app) {
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   sub->add_option("--channel", channel, "only this channel (scenes)");
-  sub->add_option("--reference", reference, "float (default) or float-snap (vertices snapped to the formatter grid)");
+  sub->add_option("--reference", reference, "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   sub->add_option("--out", out_dir, "write difference images (|error| x 8) here");
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub);
@@ -55,11 +55,21 @@ int CompareCommand::run() {
     try {
       auto eng = make_engine(engine.engine, eo);
       auto ref = make_engine("float", ro);
+      // The same reference with visibility by priority, to classify differing ids (only for a
+      // z-buffered reference, and only when some id differs).
+      EngineOptions po = ro;
+      po.params["visibility"] = "priority";
+      auto priority_ref = make_engine("float", po);
+      const bool classify = ro.params.count("visibility") == 0;
       for (std::size_t k; (k = next++) < jobs.size();) {
         const ScreenFrame f = jobs.screen_frame(k);
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
-        rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out, &f);
+        rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
+        if (classify && rows[k].ids_differ > 0) {
+          const EngineRun by_priority = priority_ref->render(f);
+          rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out, &by_priority.out);
+        }
         if (!out_dir.empty())
           write_png((std::filesystem::path(out_dir) / (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) +
                                                        "_diff.png")).string(),
@@ -102,8 +112,8 @@ int CompareCommand::run() {
             << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
             << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
             << "      of those, " << totals.ids_priority_vs_depth
-            << " where the engine's polygon precedes the reference's in priority order but lies behind it"
-               " (priority order against the z-buffer)\n";
+            << " where the reference itself shows another polygon with visibility by priority order instead of"
+               " the z-buffer (priority order against the z-buffer)\n";
   const double share = all.sum_squared > 0 ? 100.0 * all.sum_squared_ids_differ / all.sum_squared : 0.0;
   std::cout << "      error attribution: " << std::setprecision(1) << share
             << " % of the squared error lies in the " << all.pixels_ids_differ

@@ -10,10 +10,13 @@
 namespace cig::cli {
 
 EngineOptions reference_options(const std::string& reference) {
-  if (reference != "float" && reference != "float-snap")
-    throw InputError("", "--reference", "'" + reference + "' is neither float nor float-snap");
+  // float: the ground truth; float-snap: vertices snapped to the formatter grid (the engines'
+  // coverage); float-snap-priority: that, with visibility by list order as the engines have it.
+  if (reference != "float" && reference != "float-snap" && reference != "float-snap-priority")
+    throw InputError("", "--reference", "'" + reference + "' is none of float, float-snap, float-snap-priority");
   EngineOptions o;
-  o.snap = reference == "float-snap";
+  o.snap = reference != "float";
+  if (reference == "float-snap-priority") o.params["visibility"] = "priority";
   return o;
 }
 
@@ -46,9 +49,11 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
   return pipeline_->geometry(jobs_[k].first, jobs_[k].second, unused);
 }
 
-Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference, const ScreenFrame* polygons) {
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference, const RasterImage* priority_reference) {
   Comparison c{frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), 0};
-  if (polygons && c.ids_differ > 0) c.ids_priority_vs_depth = priority_depth_disagreements(*polygons, got.ids.id, reference.ids.id);
+  if (priority_reference && c.ids_differ > 0)
+    for (std::size_t k = 0; k < got.ids.id.size(); ++k)
+      if (got.ids.id[k] != reference.ids.id[k] && priority_reference->ids.id[k] != reference.ids.id[k]) ++c.ids_priority_vs_depth;
   return c;
 }
 

@@ -47,10 +47,14 @@ struct Comparison {
   int frame = 0, channel = 0;
   ImageError error;
   long ids_differ = 0;
-  long ids_priority_vs_depth = 0;  // of those: the engine's polygon precedes the reference's in priority, lies behind it
+  // Of those, the pixels where the reference itself shows another polygon when its visibility
+  // follows the priority list instead of the z-buffer (Visibility::kPriority): the engine
+  // followed the priority order where it disagrees with depth.
+  long ids_priority_vs_depth = 0;
 };
+// `priority_reference`: the same reference with visibility by priority (nullptr: not classified).
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference,
-                       const ScreenFrame* polygons = nullptr);
+                       const RasterImage* priority_reference = nullptr);
 nlohmann::ordered_json comparison_json(const Comparison& c);
 
 // Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.

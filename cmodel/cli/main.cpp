@@ -13,6 +13,9 @@
 
 #include "cli/arch_command.hpp"
 #include "cli/cli_common.hpp"
+#ifdef CIG_WITH_RTL
+#include "cli/cosim_command.hpp"
+#endif
 #include "cli/sweep_command.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
@@ -69,6 +72,10 @@ int run(int argc, char** argv) {
   sweep.add_to(app);
   ArchCommand arch;
   arch.add_to(app);
+#ifdef CIG_WITH_RTL
+  CosimCommand cosim;
+  cosim.add_to(app);
+#endif
 
   try {
     app.parse(argc, argv);
@@ -190,6 +197,9 @@ int run(int argc, char** argv) {
   if (*compare.sub) return compare.run();
   if (*sweep.sub) return sweep.run();
   if (*arch.sub) return arch.run();
+#ifdef CIG_WITH_RTL
+  if (*cosim.sub) return cosim.run();
+#endif
 
   if (*polys) {
     Scene scene = load_scene(polys_scene);

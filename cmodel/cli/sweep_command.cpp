@@ -30,7 +30,7 @@ void SweepCommand::add_to(CLI::App& app) {
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   sub->add_option("--channel", channel, "only this channel (scenes)");
-  sub->add_option("--reference", reference, "float (default) or float-snap (vertices snapped to the formatter grid)");
+  sub->add_option("--reference", reference, "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   sub->add_option("--repeat", repeat, "time each image R times, keep the best (default 3)")->check(CLI::Range(1, 1000));
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub);
@@ -89,6 +89,15 @@ int SweepCommand::run() {
   }
   const EngineOptions ro = reference_options(reference);
   const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
+  // Every engine's options against the raster before any work (e.g. an architecture of another n).
+  if (jobs.size() > 0)
+    for (std::size_t v = 0; v < engines.size(); ++v) {
+      try {
+        engines[v]->check_raster(jobs.screen_frame(0).raster);
+      } catch (const InputError& e) {
+        throw InputError("", "--vary", varied.key + "=" + varied.values[v] + ": " + e.rule());
+      }
+    }
 
   // Image by image: the reference once, then every value R times (timed: the render call alone).
   std::vector<SweepRow> rows(varied.values.size());

@@ -11,15 +11,25 @@ namespace {
 
 class FloatEngine : public RasterEngine {
  public:
-  explicit FloatEngine(const EngineOptions& o) : options_(o) {}
+  // --engine-opt visibility=depth (default, the z-buffer) | priority (list order, as the engines).
+  explicit FloatEngine(const EngineOptions& o) : options_(o) {
+    for (const auto& [key, value] : o.params) {
+      if (key != "visibility")
+        throw InputError("", "--engine-opt", "engine 'float' takes no option '" + key + "' (it takes visibility=depth|priority)");
+      if (value != "depth" && value != "priority")
+        throw InputError("", "--engine-opt", "visibility='" + value + "' is neither depth nor priority");
+      visibility_ = value == "priority" ? Visibility::kPriority : Visibility::kDepth;
+    }
+  }
   const char* name() const override { return "float"; }
   EngineRun render(const ScreenFrame& frame) override {
     ReferenceStats st;
     EngineRun run;
-    if (options_.snap) run.out = render_reference_snapped(frame, st);
-    else run.out = render_reference(frame, st);
+    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_);
+    else run.out = render_reference(frame, st, visibility_);
     run.report["engine"] = "float";
     run.report["snapped"] = options_.snap;
+    run.report["visibility"] = visibility_ == Visibility::kPriority ? "priority" : "depth";
     run.report["polygons"] = st.polygons;
     run.report["polygons_empty"] = st.polygons_empty;
     run.report["samples_covered"] = st.samples_covered;
@@ -33,6 +43,7 @@ class FloatEngine : public RasterEngine {
 
  private:
   EngineOptions options_;
+  Visibility visibility_ = Visibility::kDepth;
 };
 
 }  // namespace
@@ -40,15 +51,7 @@ class FloatEngine : public RasterEngine {
 std::vector<std::string> engine_names() { return {"float", "segment", "segment-double", "quadtree", "quadtree-double"}; }
 
 std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
-  auto reject_params = [&](const char* engine) {
-    if (!options.params.empty())
-      throw InputError("", "--engine-opt", "engine '" + std::string(engine) + "' takes no option '" +
-                                               options.params.begin()->first + "'");
-  };
-  if (name == "float") {
-    reject_params("float");
-    return std::make_unique<FloatEngine>(options);
-  }
+  if (name == "float") return std::make_unique<FloatEngine>(options);
   if (name == "segment") return make_segment_engine(options, false);
   if (name == "segment-double") return make_segment_engine(options, true);
   if (name == "quadtree") return make_quadtree_engine(options, false);

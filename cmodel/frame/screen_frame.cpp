@@ -157,46 +157,4 @@ std::string polygon_list_json(const ScreenFrame& f) {
   return s.str();
 }
 
-double inverse_depth_at(const ScreenPolygon& p, double xs, double ys) {
-  const std::size_t n = p.vertices.size();
-  if (n < 3) return 0;
-  std::size_t best[3] = {0, 1, 2};
-  double best_area = -1;
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b)
-      for (std::size_t c = b + 1; c < n; ++c) {
-        const ScreenVertex &u = p.vertices[a], &v = p.vertices[b], &w = p.vertices[c];
-        const double area = std::abs((v.xs - u.xs) * (w.ys - u.ys) - (w.xs - u.xs) * (v.ys - u.ys));
-        if (area > best_area) {
-          best_area = area;
-          best[0] = a;
-          best[1] = b;
-          best[2] = c;
-        }
-      }
-  const ScreenVertex &u = p.vertices[best[0]], &v = p.vertices[best[1]], &w = p.vertices[best[2]];
-  const double det = (v.xs - u.xs) * (w.ys - u.ys) - (w.xs - u.xs) * (v.ys - u.ys);
-  if (det == 0) return 1.0 / u.zs;
-  // Barycentric weights of (xs, ys), extrapolated outside the triangle.
-  const double l1 = ((xs - u.xs) * (w.ys - u.ys) - (w.xs - u.xs) * (ys - u.ys)) / det;
-  const double l2 = ((v.xs - u.xs) * (ys - u.ys) - (xs - u.xs) * (v.ys - u.ys)) / det;
-  return (1 - l1 - l2) / u.zs + l1 / v.zs + l2 / w.zs;
-}
-
-long priority_depth_disagreements(const ScreenFrame& f, const std::vector<std::int32_t>& engine,
-                                  const std::vector<std::int32_t>& reference) {
-  const int n = f.raster;
-  const double u = 4096.0 / n;  // grid units per pixel; pixel p spans [u p - 1, u p - 1 + u)
-  long count = 0;
-  for (int py = 0; py < n; ++py)
-    for (int px = 0; px < n; ++px) {
-      const std::size_t k = std::size_t(py) * std::size_t(n) + std::size_t(px);
-      const std::int32_t e = engine[k], r = reference[k];
-      if (e == r || e < 0 || r < 0 || std::size_t(e) >= f.polygons.size() || std::size_t(r) >= f.polygons.size()) continue;
-      const double xs = (u * px - 1 + u / 2 - kGridOffset) / kGridScale, ys = (u * py - 1 + u / 2 - kGridOffset) / kGridScale;
-      if (e < r && inverse_depth_at(f.polygons[std::size_t(e)], xs, ys) < inverse_depth_at(f.polygons[std::size_t(r)], xs, ys)) ++count;
-    }
-  return count;
-}
-
 }  // namespace cig

@@ -65,17 +65,6 @@ constexpr double kMaxLightDiameterUnits = 7.0;
 ScreenFrame snap_to_formatter_grid(const ScreenFrame& f);
 double snap_grid_coordinate(double s);  // Xs or Ys -> snapped Xs or Ys
 
-// 1/Zs of a polygon's plane at screen position (xs, ys): the plane through the three vertices
-// spanning the largest triangle (1/Zs is affine in screen space for a planar polygon).
-double inverse_depth_at(const ScreenPolygon& p, double xs, double ys);
-
-// Pixels where an engine that resolves visibility by priority shows polygon e and the z-buffered
-// reference polygon r != e, with e before r in priority order but behind it at the pixel's centre:
-// the engine followed the priority list where it disagrees with depth. `engine` and `reference`
-// are per-pixel polygon ids (-1: none) of an N x N raster.
-long priority_depth_disagreements(const ScreenFrame& f, const std::vector<std::int32_t>& engine,
-                                  const std::vector<std::int32_t>& reference);
-
 ScreenFrame load_polygon_list(const std::string& file);
 ScreenFrame parse_polygon_list(const std::string& text, const std::string& file);
 std::string polygon_list_json(const ScreenFrame& f);  // "cig-polys" text

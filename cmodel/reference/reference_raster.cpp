@@ -124,19 +124,21 @@ struct StripBins {
 
 namespace {
 
-RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats);
+RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats, Visibility visibility);
 
 }  // namespace
 
-RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats) { return render(frame, frame, stats); }
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility) {
+  return render(frame, frame, stats, visibility);
+}
 
-RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats) {
-  return render(snap_to_formatter_grid(exact), exact, stats);
+RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility) {
+  return render(snap_to_formatter_grid(exact), exact, stats, visibility);
 }
 
 namespace {
 
-RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats) {
+RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats, Visibility visibility) {
   auto t0 = Clock::now();
   double resolve_ms = 0;
   const SampleLattice lattice{frame.raster};
@@ -233,7 +235,8 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
             ++stats.samples_covered;
             const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
             const double w = dp.at(double(i), double(j));
-            if (w > depth[idx]) {
+            // Polygons come in list order, so under kPriority the first to cover a sample keeps it.
+            if (visibility == Visibility::kPriority ? owner[idx] < 0 : w > depth[idx]) {
               depth[idx] = w;
               owner[idx] = id;
               intensity[idx] = float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0));

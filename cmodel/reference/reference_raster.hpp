@@ -36,7 +36,14 @@ struct RasterImage {
   IdBuffer ids;
 };
 
-RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats);
+// Visibility: kDepth is the ground truth (the z-buffer above). kPriority lets the first polygon in
+// the list that covers a sample own it, as the raster engines do (they are fed in priority order
+// and trust it): with the same coverage, the pixels where the two differ are exactly those where
+// the priority order and the z-buffer disagree, which is how an engine's residual is classified.
+// Fog and light points use the depth of the owning polygon either way.
+enum class Visibility { kDepth, kPriority };
+
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility = Visibility::kDepth);
 
 // The id of a pixel from its samples' owners (polygon index, -1 none): the polygon owning most
 // samples; ties go to the earlier polygon, the background loses ties. Sorts `ids`.
@@ -47,6 +54,6 @@ std::int32_t majority_owner(std::int32_t* ids, int count);
 // keeping each vertex's Z would tilt the 1/Z plane of every polygon by a different amount, so
 // near-coplanar surfaces (a marking 5 cm above a runway) would z-fight; the depth of a point of a
 // polygon does not depend on where the formatter rounds its vertices.
-RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats);
+RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility = Visibility::kDepth);
 
 }  // namespace cig

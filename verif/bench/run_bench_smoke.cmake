@@ -12,7 +12,7 @@ foreach(text IN LISTS EXPECT)
   endif()
 endforeach()
 # A counter that printed as zero would mean the engine reported nothing.
-if(out MATCHES "segments/s=0/s" OR out MATCHES "pixels/s=0/s" OR out MATCHES "samples/s=0/s" OR out MATCHES "windows/s=0/s")
+if(out MATCHES "cycles/s=0/s" OR out MATCHES "segments/s=0/s" OR out MATCHES "pixels/s=0/s" OR out MATCHES "samples/s=0/s" OR out MATCHES "windows/s=0/s")
   message(FATAL_ERROR "a counter is zero:\n${out}")
 endif()
 message(STATUS "ok:\n${out}")

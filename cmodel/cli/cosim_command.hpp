@@ -1,0 +1,23 @@
+// `cig cosim` (implemented in verif/cosim/cosim_command.cpp, with the Verilated RTL): runs the
+// same input through the quadtree RTL and through the kernels + architecture model, and reports
+// the records compared, the mismatches, the cycles of both and the simulation speed.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace cig::cli {
+
+struct CosimCommand {
+  CLI::App* sub = nullptr;
+  std::string input, arch, frames_text, trace_file, report_file;
+  int frame_k = -1, channel = -1;
+  unsigned stall_seed = 1;
+  int input_gaps = 0, output_stalls = 0;
+  CLI::Option* frame_opt = nullptr;
+  void add_to(CLI::App& app);
+  int run();
+};
+
+}  // namespace cig::cli

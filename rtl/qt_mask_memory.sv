@@ -1,0 +1,177 @@
+// Multilevel priority masks (SPEC E, seed 004; hls/quadtree/mask_memory.hpp): a 4-bit word per
+// window of levels 0..N_LOG2-1, one bit per child (bit 2 y_b + x_b). Word (x, y) of level l is
+// child {y[0], x[0]} of word (x >> 1, y >> 1) of level l - 1.
+//
+// Timing contract: reads (NRD combinational ports) see the words as they were at the start of the
+// cycle; the cycle's set requests (NSET ports) and their upward closure (a word that becomes
+// 4'hF, and was not, sets its bit in its parent) are written at the clock edge. The closure of a
+// set of requests does not depend on their order (OR is commutative, "all four set" monotone), so
+// every request's chain is followed level by level, each word merging every bit that any chain
+// sets in it this cycle.
+//
+// Storage: one array per level (4^l words) plus a valid bit per word. clear_i (the frame start)
+// clears the valid bits in one cycle; a word whose valid bit is clear reads as 0.
+module qt_mask_memory #(
+  parameter int N_LOG2 = 9,
+  parameter int NRD = 1,
+  parameter int NSET = 1
+) (
+  input  logic              clk_i,
+  input  logic              clear_i,
+  // Read ports: level (0..N_LOG2-1), address -> the word.
+  input  logic [NRD*4-1:0]  rd_level_i,
+  input  logic [NRD*10-1:0] rd_x_i,
+  input  logic [NRD*10-1:0] rd_y_i,
+  output logic [NRD*4-1:0]  rd_mask_o,
+  // Set ports: {level[3:0], x[9:0], y[9:0], child[1:0]} (child in bits 1:0).
+  input  logic [NSET-1:0]   set_valid_i,
+  input  logic [NSET*26-1:0] set_i
+);
+
+  // ---- Each request's chain up the levels (from the request alone) ------------------------------
+  // Flat vectors indexed by k = l * NSET + s (level l, request s): reach[k]: request s is at or
+  // below level l; then ax/ay[k] is the word of level l on its path and abit[k] the bit the chain
+  // would set in it.
+  localparam int NK = N_LOG2 * NSET;
+  logic [NK-1:0]    reach;
+  logic [NK*10-1:0] ax, ay;
+  logic [NK*2-1:0]  abit;
+  // old_word[k]: that word at the start of the cycle (read by level l's block below).
+  logic [NK*4-1:0]  old_word;
+  // act[k]: the chain sets abit in word (ax, ay) of level l this cycle; merged[k]: that word after
+  // the edge (every bit set in it this cycle).
+  logic [NK-1:0]    act;
+  logic [NK*4-1:0]  merged;
+
+  logic [3:0] req_level, up;   // up: levels from the request to l
+  logic [9:0] req_x, req_y;
+  always_comb begin
+    reach = '0;
+    ax = '0;
+    ay = '0;
+    abit = '0;
+    req_level = '0;
+    req_x = '0;
+    req_y = '0;
+    up = '0;
+    for (int l = 0; l < N_LOG2; l++) begin
+      for (int s = 0; s < NSET; s++) begin
+        req_level = set_i[s*26+22 +: 4];
+        req_x = set_i[s*26+12 +: 10];
+        req_y = set_i[s*26+2 +: 10];
+        up = req_level - 4'(l);
+        reach[l*NSET+s] = set_valid_i[s] && (req_level >= 4'(l));
+        ax[(l*NSET+s)*10 +: 10] = req_x >> up;
+        ay[(l*NSET+s)*10 +: 10] = req_y >> up;
+        if (up == 4'd0) begin
+          abit[(l*NSET+s)*2 +: 2] = set_i[s*26 +: 2];
+        end else begin
+          // The word one level down is child {y[0], x[0]} of this one.
+          abit[(l*NSET+s)*2 +: 2] = {req_y[up - 4'd1], req_x[up - 4'd1]};
+        end
+      end
+    end
+  end
+
+  // ---- The closure: level by level from the finest ----------------------------------------------
+  logic [3:0] set_bits;   // the bits every active chain sets in one chain's word
+  always_comb begin
+    act = '0;
+    merged = '0;
+    set_bits = '0;
+    for (int l = N_LOG2 - 1; l >= 0; l--) begin
+      for (int s = 0; s < NSET; s++) begin
+        if (reach[l*NSET+s]) begin
+          if (set_i[s*26+22 +: 4] == 4'(l)) begin
+            act[l*NSET+s] = 1'b1;   // the request itself
+          end else if (l + 1 < N_LOG2) begin
+            // The word one level down became full this cycle (and was not already).
+            act[l*NSET+s] = act[(l+1)*NSET+s] && merged[((l+1)*NSET+s)*4 +: 4] == 4'hF &&
+                            old_word[((l+1)*NSET+s)*4 +: 4] != 4'hF;
+          end
+        end
+      end
+      for (int s = 0; s < NSET; s++) begin
+        set_bits = '0;
+        for (int t = 0; t < NSET; t++) begin
+          if (act[l*NSET+t] && ax[(l*NSET+t)*10 +: 10] == ax[(l*NSET+s)*10 +: 10] &&
+              ay[(l*NSET+t)*10 +: 10] == ay[(l*NSET+s)*10 +: 10]) begin
+            set_bits = set_bits | (4'b0001 << abit[(l*NSET+t)*2 +: 2]);
+          end
+        end
+        merged[(l*NSET+s)*4 +: 4] = old_word[(l*NSET+s)*4 +: 4] | (act[l*NSET+s] ? set_bits : 4'h0);
+      end
+    end
+  end
+
+  // ---- Storage, one block per level -------------------------------------------------------------
+  logic [N_LOG2*NRD*4-1:0] rd_word;   // [(l * NRD + r) * 4 +: 4]: port r's address at level l
+
+  for (genvar l = 0; l < N_LOG2; l++) begin : g_level
+    if (l == 0) begin : g_root
+      logic [3:0] word_q;
+      for (genvar s = 0; s < NSET; s++) begin : g_old
+        assign old_word[s*4 +: 4] = word_q;
+      end
+      for (genvar r = 0; r < NRD; r++) begin : g_rd
+        assign rd_word[r*4 +: 4] = word_q;
+      end
+      always_ff @(posedge clk_i) begin
+        if (clear_i) begin
+          word_q <= '0;
+        end else begin
+          for (int s = 0; s < NSET; s++) begin
+            if (act[s]) begin
+              word_q <= merged[s*4 +: 4];
+            end
+          end
+        end
+      end
+    end else begin : g_words
+      localparam int WORDS = 1 << (2 * l);
+      logic [3:0]       words_q [WORDS];
+      logic [WORDS-1:0] valid_q;
+
+      for (genvar s = 0; s < NSET; s++) begin : g_old
+        logic [2*l-1:0] idx;
+        assign idx = {ay[(l*NSET+s)*10 +: l], ax[(l*NSET+s)*10 +: l]};
+        assign old_word[(l*NSET+s)*4 +: 4] = valid_q[idx] ? words_q[idx] : 4'h0;
+      end
+      for (genvar r = 0; r < NRD; r++) begin : g_rd
+        logic [2*l-1:0] idx;
+        assign idx = {rd_y_i[r*10 +: l], rd_x_i[r*10 +: l]};
+        assign rd_word[(l*NRD+r)*4 +: 4] = valid_q[idx] ? words_q[idx] : 4'h0;
+      end
+
+      always_ff @(posedge clk_i) begin
+        if (clear_i) begin
+          valid_q <= WORDS'(0);
+        end else begin
+          for (int s = 0; s < NSET; s++) begin
+            if (act[l*NSET+s]) begin
+              valid_q[{ay[(l*NSET+s)*10 +: l], ax[(l*NSET+s)*10 +: l]}] <= 1'b1;
+            end
+          end
+        end
+      end
+      always_ff @(posedge clk_i) begin
+        for (int s = 0; s < NSET; s++) begin
+          if (act[l*NSET+s] && !clear_i) begin
+            words_q[{ay[(l*NSET+s)*10 +: l], ax[(l*NSET+s)*10 +: l]}] <= merged[(l*NSET+s)*4 +: 4];
+          end
+        end
+      end
+    end
+  end
+
+  // Address bits above level N_LOG2 - 1's width are not read.
+  logic unused_rd_addr;
+  assign unused_rd_addr = ^{rd_x_i, rd_y_i};
+
+  for (genvar r = 0; r < NRD; r++) begin : g_rd_port
+    logic [3:0] level;
+    assign level = rd_level_i[r*4 +: 4];
+    assign rd_mask_o[r*4 +: 4] = (32'(level) < N_LOG2) ? rd_word[(32'(level)*NRD+r)*4 +: 4] : 4'h0;
+  end
+
+endmodule

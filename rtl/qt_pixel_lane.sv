@@ -1,0 +1,102 @@
+// One sample lane of the pixel processor: the colour of sample (di, dj) of a pixel record, bit
+// for bit as hls/quadtree/pixel_processor.hpp quad_pixel_process computes it for a fresh sample
+// that no light shows on (the processor picks the light's colour instead where one does):
+//   vI = f[0] + dp_di[0] di + dp_dj[0] dj, vW likewise with parameter 1 (PW bits, wrapping:
+//     QuadFixedArith::at_sample);
+//   I = vI saturated to [0, 2^(8+G) - 1] (UFixed<8+G, 8>: same fractional bits, no rounding);
+//   code = e8m7 code of 1/Z from vW (qt_e8m7_code); the processor looks it up in the fog table
+//     and returns the factor f9 (0..256; any 9-bit value is handled as the kernel would);
+//   per channel (hls/pixel/sample_colour.hpp):
+//     shade = min((colour I + 2^(G-1)) >> G, 65535)                     (colour x I, 8 frac bits)
+//     mix   = clamp((shade (256 - f9) + (fog f9 << 8) + 128) >> 8, 0, 65535)   (fog_mix, floor)
+// The sample's position is an input (tied to a constant per lane) rather than a parameter, so that
+// the 16 lanes are one module (one synthesis, one row of the synthesis report).
+module qt_pixel_lane #(
+  parameter int PW = 53,
+  parameter int GW = 38,
+  parameter int G = 16
+) (
+  input  logic [3:0]    sample_i,          // 4 dj + di
+  input  logic [PW-1:0] f_intensity_i,     // f[0] at the pixel's top-left sample
+  input  logic [PW-1:0] f_depth_i,         // f[1]
+  input  logic [GW-1:0] di_intensity_i,    // dp_di[0]
+  input  logic [GW-1:0] dj_intensity_i,    // dp_dj[0]
+  input  logic [GW-1:0] di_depth_i,        // dp_di[1]
+  input  logic [GW-1:0] dj_depth_i,        // dp_dj[1]
+  input  logic [9:0]    w_exponent_i,
+  input  logic [23:0]   colour_i,          // R in bits 7:0
+  input  logic [23:0]   fog_colour_i,
+  output logic [14:0]   code_o,            // e8m7 code of 1/Z: the fog table's address
+  input  logic [8:0]    fog_factor_i,      // the fog table's entry at code_o
+  output logic [47:0]   colour_o           // three 16-bit samples (8 fractional bits), R first
+);
+
+  localparam int IW = 8 + G;   // intensity: 8 integer, G fractional bits
+
+  // ---- The parameters at the sample ---------------------------------------------------------------
+  logic signed [PW-1:0] v_intensity, v_depth;
+  // g * k for k = 0..3 (the sample's offset): two shifted, gated copies of g.
+  function automatic logic [PW-1:0] times_offset(input logic [GW-1:0] g, input logic [1:0] k);
+    logic [PW-1:0] g_ext;
+    g_ext = PW'($signed(g));
+    times_offset = (k[0] ? g_ext : '0) + (k[1] ? (g_ext << 1) : '0);
+  endfunction
+  assign v_intensity = f_intensity_i + times_offset(di_intensity_i, sample_i[1:0]) +
+                       times_offset(dj_intensity_i, sample_i[3:2]);
+  assign v_depth = f_depth_i + times_offset(di_depth_i, sample_i[1:0]) + times_offset(dj_depth_i, sample_i[3:2]);
+
+  // ---- Intensity: saturated to [0, 2^IW - 1] ------------------------------------------------------
+  logic [IW-1:0] intensity;
+  always_comb begin
+    if (v_intensity[PW-1]) begin
+      intensity = '0;
+    end else if (|v_intensity[PW-2:IW]) begin
+      intensity = '1;
+    end else begin
+      intensity = v_intensity[IW-1:0];
+    end
+  end
+
+  // ---- 1/Z -> e8m7 code (the fog table's address) ------------------------------------------------
+  qt_e8m7_code #(
+    .PW(PW),
+    .G (G)
+  ) u_code (
+    .value_i      (v_depth),
+    .w_exponent_i (w_exponent_i),
+    .code_o       (code_o)
+  );
+
+  // ---- Colour x I, then fog ------------------------------------------------------------------------
+  logic signed [10:0] keep;   // 256 - f9
+  assign keep = 11'sd256 - 11'($signed({2'b00, fog_factor_i}));
+
+  for (genvar c = 0; c < 3; c++) begin : g_channel
+    logic [IW+8:0]      lit;        // colour x I + half an LSB of the 8-fraction-bit result
+    logic [IW+8-G:0]    shade_wide;
+    logic [15:0]        shade;
+    logic signed [29:0] mixed;      // shade (256 - f9) + fog f9 2^8, 16 fractional bits
+    logic signed [21:0] rounded;
+    logic [16:0]        fog_term;   // fog f9, 8 fractional bits
+    logic [IW+7:0]      product;    // colour x I: 8 x IW bits
+    assign product = colour_i[c*8 +: 8] * intensity;
+    assign lit = (IW+9)'(product) + (IW+9)'(1 << (G - 1));
+    assign shade_wide = (IW+9-G)'(lit >> G);   // the G dropped bits: rounded half up above
+    assign shade = (|shade_wide[IW+8-G:16]) ? 16'hFFFF : shade_wide[15:0];
+    logic signed [27:0] kept;       // shade (256 - f9): 17 x 11 bits signed
+    assign fog_term = fog_colour_i[c*8 +: 8] * fog_factor_i;
+    assign kept = $signed({1'b0, shade}) * keep;
+    assign mixed = 30'(kept) + 30'({fog_term, 8'd0});
+    assign rounded = 22'((mixed + 30'sd128) >>> 8);
+    always_comb begin
+      if (rounded < 0) begin
+        colour_o[c*16 +: 16] = 16'h0000;
+      end else if (rounded > 22'sd65535) begin
+        colour_o[c*16 +: 16] = 16'hFFFF;
+      end else begin
+        colour_o[c*16 +: 16] = rounded[15:0];
+      end
+    end
+  end
+
+endmodule

@@ -1,0 +1,149 @@
+// Lock-step co-simulation of the quadtree RTL (rtl/qt_raster.sv, Verilated) against the
+// bit-accurate kernels driven by the cycle-level architecture model (cmodel/quadtree/
+// arch_model.hpp): the same stream of level-0 windows (the setup kernel's output) goes through
+// both, with the same input gaps and output stalls, and every record is compared:
+//   * per PE: every window it loads (cycle, mask word, the record) and every child it emits
+//     (cycle, child number, full flag, the record: level, address, d per edge, f per parameter,
+//     the polygon's constants, the pixel level's sub-pixel mask);
+//   * per pixel processor: every record it takes (cycle, record, samples taken, became full);
+//   * the mask set requests of every cycle (as a set: their order within a cycle is immaterial);
+//   * the frame's cycle count and the final pixels (the RTL's read-out port against the model's
+//     resolve).
+// Records are compared as bit vectors in the RTL's layout (record_bits.hpp); the first mismatch
+// is reported with the stream, the record number, the cycle, the field, the expected and the
+// obtained value.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "image/image.hpp"
+#include "quadtree/arch_model.hpp"
+#include "quadtree/quadtree_frame.hpp"
+#include "record_bits.hpp"
+
+namespace cig::cosim {
+
+// The format the RTL implements (rtl/README.md parameters PW, GW, G).
+using RtlArith = hls::QuadFixedArith<hls::QuadFormatFine>;
+inline RecordLayout rtl_layout() {
+  return RecordLayout(hls::QuadFormatFine::kParamWidth, hls::QuadFormatFine::kGradientWidth);
+}
+
+struct StallConfig {
+  std::uint32_t seed = 1;
+  int input_gap_percent = 0;
+  int output_stall_percent = 0;
+};
+
+enum class EventKind { kLoad, kEmit, kPixel };
+
+struct Event {
+  EventKind kind = EventKind::kLoad;
+  long long cycle = 0;
+  int child = 0;          // emits
+  unsigned mask = 0;      // loads: the mask word; pixels: the samples taken
+  bool full = false;      // emits: child fully covered; pixels: the pixel became full
+  Bits record;
+};
+
+struct MaskSetEvent {
+  long long cycle;
+  int level, x, y, child;
+  bool operator<(const MaskSetEvent& o) const {
+    return std::tie(cycle, level, x, y, child) < std::tie(o.cycle, o.level, o.x, o.y, o.child);
+  }
+  bool operator==(const MaskSetEvent& o) const {
+    return std::tie(cycle, level, x, y, child) == std::tie(o.cycle, o.level, o.x, o.y, o.child);
+  }
+};
+
+struct Trace {
+  long long cycles = 0;
+  std::vector<std::vector<Event>> pe;      // per PE: loads and emits in cycle order
+  std::vector<std::vector<Event>> pixel;   // per pixel processor
+  std::vector<MaskSetEvent> mask_sets;     // sorted
+  Image image;
+  double seconds = 0;                      // wall time of the run (simulation speed)
+};
+
+// The model's side: the architecture model with a tracer that records what the RTL must show.
+template <class P>
+class TraceRecorder final : public quad::ArchTracer<P> {
+ public:
+  TraceRecorder(const RecordLayout& L, Trace& t, int pes, int pixel_units) : L_(L), t_(t) {
+    t_.pe.assign(std::size_t(pes), {});
+    t_.pixel.assign(std::size_t(pixel_units), {});
+  }
+  // A load is compared by its cycle and mask word: the window it takes is the head of the PE's
+  // input FIFO, i.e. a record already compared where it was emitted (or the input stream's).
+  void load(long long cycle, int pe, const quad::QuadItem<P>&, unsigned mask) override {
+    t_.pe[std::size_t(pe)].push_back({EventKind::kLoad, cycle, 0, mask, false, Bits()});
+  }
+  void emit(long long cycle, int pe, int child, const quad::QuadItem<P>& c, bool full) override {
+    t_.pe[std::size_t(pe)].push_back({EventKind::kEmit, cycle, child, 0, full, pack_record(L_, c.w, unsigned(c.samples.value()))});
+  }
+  void pixel(long long cycle, int unit, const quad::QuadItem<P>& r, unsigned fresh, bool full) override {
+    t_.pixel[std::size_t(unit)].push_back({EventKind::kPixel, cycle, 0, fresh, full, pack_record(L_, r.w, unsigned(r.samples.value()))});
+  }
+  void mask_set(long long cycle, int level, int x, int y, int child) override {
+    t_.mask_sets.push_back({cycle, level, x, y, child});
+  }
+
+ private:
+  const RecordLayout& L_;
+  Trace& t_;
+};
+
+// Runs the model on `roots` with the pixel frame `pixels` (begun for the frame).
+Trace model_trace(const quad::Architecture& arch, const std::vector<hls::QuadWindow<RtlArith>>& roots,
+                  quad::PixelFrame<RtlArith>& pixels, const StallConfig& stalls, int fifo_depth, quad::ArchStats* stats = nullptr);
+
+struct Comparison {
+  long long records_compared = 0;   // PE loads and emits, pixel records, mask sets, pixels
+  long long mismatches = 0;         // records that differ (or are missing on one side)
+  bool cycles_equal = false;
+  std::string first;                // the first mismatch, in detail ("" if none)
+  bool ok() const { return mismatches == 0 && cycles_equal; }
+};
+
+Comparison compare_traces(const RecordLayout& L, const Trace& model, const Trace& rtl, bool compare_cycles = true);
+
+// The Verilated configurations this build has (N_LOG2, TREE_LEVELS), and a runner for any of them.
+struct RtlConfig {
+  int raster_log2;
+  int tree_levels;
+  std::string arch_text() const;  // "9p", "7p2t", ...
+};
+std::vector<RtlConfig> rtl_configs();
+
+class RtlRunner {
+ public:
+  virtual ~RtlRunner() = default;
+  // Runs one frame through the RTL: configuration from `pixels` (fog table, colours, light
+  // covers), frame start, the stream with the stalls, the read-out of every pixel.
+  virtual Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
+                    const StallConfig& stalls, long long max_cycles) = 0;
+  // FST waveform of the following runs (this build must have tracing on).
+  virtual void trace_to(const std::string& fst_file) = 0;
+};
+// nullptr when this build has no such configuration.
+std::unique_ptr<RtlRunner> make_rtl_runner(int raster_log2, int tree_levels);
+
+// One frame through both sides.
+struct CosimResult {
+  Trace model, rtl;
+  Comparison comparison;
+  quad::ArchStats stats;
+};
+CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
+                        long long max_cycles = 200000000);
+// The same on a stream of windows already set up (tests build their own streams).
+CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<hls::QuadWindow<RtlArith>>& roots,
+                         RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls, long long max_cycles = 200000000);
+
+}  // namespace cig::cosim
