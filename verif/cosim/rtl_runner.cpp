@@ -1,5 +1,6 @@
-// The Verilated configurations of rtl/qt_raster.sv (verif/cosim/CMakeLists.txt verilates each with
-// its own prefix) behind one interface: table configuration, frame start, the polygon stream with
+// The Verilated configurations of rtl/qt_raster.sv inside its co-simulation wrapper
+// (qt_raster_cosim_tb.sv; verif/cosim/CMakeLists.txt verilates each with its own prefix) behind
+// one interface: table configuration, frame start, the polygon stream with
 // the verification stalls, the trace ports read every cycle, the read-out of the final pixels.
 #include <chrono>
 #include <cstring>
@@ -40,13 +41,11 @@ class RtlRunnerImpl final : public RtlRunner {
     top_->cfg_valid_i = 0;
     top_->poly_valid_i = 0;
     top_->pixel_stall_i = 0;
-    eval_inputs();
-    tick();
-    eval_inputs();
-    tick();
+    fall();
+    edge();
+    edge();
     top_->rst_ni = 1;
-    eval_inputs();
-    tick();
+    edge();
   }
   ~RtlRunnerImpl() override {
     if (fst_) fst_->close();
@@ -62,10 +61,10 @@ class RtlRunnerImpl final : public RtlRunner {
   Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels, const StallConfig& stalls,
             long long max_cycles) override {
     configure(pixels);
-    // Frame start: one cycle.
+    // Frame start: latched by the wrapper at this edge, applied by the design at the next one,
+    // the loop's first, which starts cycle 0.
     top_->frame_start_i = 1;
-    eval_inputs();
-    tick();
+    edge();
     top_->frame_start_i = 0;
 
     const auto t0 = std::chrono::steady_clock::now();
@@ -86,7 +85,15 @@ class RtlRunnerImpl final : public RtlRunner {
       for (int u = 0; u < npix_; ++u)
         if (quad::stall_hit(stalls.seed, std::uint64_t(cycle), std::uint32_t(1 + u), stalls.output_stall_percent)) stall_bits |= 1ull << u;
       top_->pixel_stall_i = port_value_t<decltype(top_->pixel_stall_i)>(stall_bits);
-      eval_inputs();
+      // The rising edge that starts this cycle: the design's registers take the previous cycle's
+      // results, the wrapper latches this cycle's stimulus (qt_raster_cosim_tb.sv).
+      rise();
+      // The frame's cycle count: the first cycle that starts with all input in and nothing busy.
+      if (cycle > 0 && next >= roots.size() && !top_->busy_o) {
+        t.cycles = cycle;
+        fall();
+        break;
+      }
       // What the cycle does (combinational from the registers and this cycle's inputs); a PE that
       // finishes its window emits its last child before it loads the next one, as in the model.
       for (int p = 0; p < npe_; ++p) {
@@ -111,11 +118,7 @@ class RtlRunnerImpl final : public RtlRunner {
           t.mask_sets.push_back({cycle, int((m >> 22) & 15), int((m >> 12) & 1023), int((m >> 2) & 1023), int(m & 3)});
         }
       if (offer && top_->poly_ready_o) ++next;
-      tick();
-      if (next >= roots.size() && !top_->busy_o) {
-        t.cycles = cycle + 1;
-        break;
-      }
+      fall();
     }
     t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     top_->poly_valid_i = 0;
@@ -138,18 +141,22 @@ class RtlRunnerImpl final : public RtlRunner {
   }
 
  private:
-  // The rising edge. The falling edge is not evaluated on its own (nothing in the RTL is
-  // sensitive to it): clk_i goes low with the next cycle's inputs, in the caller's eval(), so a
-  // cycle costs two evaluations, not three (every eval re-runs the input-dependent logic).
-  void tick() {
+  // Clock edges. Every stimulus input goes through a register of the wrapper, so only the
+  // rising edge evaluates the design; the falling edge's eval is cheap (the read-out address is
+  // the only input logic left).
+  void rise() {
     top_->clk_i = 1;
     top_->eval();
     if (fst_) fst_->dump(time_++);
-    top_->clk_i = 0;
   }
-  void eval_inputs() {
+  void fall() {
+    top_->clk_i = 0;
     top_->eval();
     if (fst_) fst_->dump(time_++);
+  }
+  void edge() {
+    rise();
+    fall();
   }
 
   void write_cfg(int target, std::uint32_t addr, std::uint64_t lo, std::uint32_t hi = 0) {
@@ -159,8 +166,7 @@ class RtlRunnerImpl final : public RtlRunner {
     top_->cfg_data_i[0] = std::uint32_t(lo);
     top_->cfg_data_i[1] = std::uint32_t(lo >> 32);
     top_->cfg_data_i[2] = hi;
-    eval_inputs();
-    tick();
+    edge();  // latched by the wrapper; the design writes it at the next edge
     top_->cfg_valid_i = 0;
   }
 

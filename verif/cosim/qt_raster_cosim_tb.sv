@@ -1,0 +1,120 @@
+// Co-simulation wrapper of qt_raster (verification only; not part of the design): every stimulus
+// input (frame start, polygon port, pixel back-pressure, configuration port) goes through a
+// register, so that no logic of qt_raster depends combinationally on a top-level input except the
+// read-out address. Why: Verilator evaluates the logic that depends on top-level inputs on every
+// eval() call (its "input combinational" region), and the PEs, the pixel lanes and the mask
+// closure all hang off `pixel_stall_i` and `poly_valid_i`; registered, the design is evaluated
+// once per clock, after the rising edge, and a cycle costs about half as much.
+//
+// Timing seen by the testbench: the stimulus of cycle c is applied before the rising edge that
+// starts cycle c; after that edge the trace outputs describe cycle c (the design's registers are
+// those at the start of cycle c, its inputs the stimulus of cycle c), exactly what qt_raster's
+// own ports show in cycle c when driven directly.
+module qt_raster_cosim_tb #(
+  parameter int N_LOG2 = 9,
+  parameter int TREE_LEVELS = 1,
+  localparam int NE = 8,
+  localparam int NP = 2,
+  localparam int EW = 32,
+  localparam int AW = 22,
+  localparam int PW = 53,
+  localparam int GW = 38,
+  localparam int WIN_W = 24 + NE * EW + NP * PW + 45 + 2 * NE * AW + 2 * NP * GW + 10,
+  localparam int PIX_W = WIN_W + 16,
+  localparam int PIPE_LEVELS = N_LOG2 - TREE_LEVELS,
+  localparam int NPE = PIPE_LEVELS + ((1 << (2 * TREE_LEVELS)) - 1) / 3,
+  localparam int NPIX = 1 << (2 * (TREE_LEVELS - 1)),
+  localparam int NSLOT = NPE + NPIX
+) (
+  input  logic                  clk_i,
+  input  logic                  rst_ni,
+  input  logic                  frame_start_i,
+  input  logic                  poly_valid_i,
+  input  logic [WIN_W-1:0]      poly_i,
+  output logic                  poly_ready_o,
+  input  logic [NPIX-1:0]       pixel_stall_i,
+  input  logic                  cfg_valid_i,
+  input  logic [2:0]            cfg_target_i,
+  input  logic [31:0]           cfg_addr_i,
+  input  logic [64:0]           cfg_data_i,
+  output logic                  busy_o,
+  output logic [NPE-1:0]        pe_load_valid_o,
+  output logic [4*NPE-1:0]      pe_load_mask_o,
+  output logic [NPE-1:0]        pe_emit_valid_o,
+  output logic [2*NPE-1:0]      pe_emit_child_o,
+  output logic [NPE-1:0]        pe_emit_full_o,
+  output logic [NPE*PIX_W-1:0]  pe_emit_data_o,
+  output logic [NPIX-1:0]       px_valid_o,
+  output logic [NPIX*PIX_W-1:0] px_data_o,
+  output logic [16*NPIX-1:0]    px_fresh_o,
+  output logic [NPIX-1:0]       px_full_o,
+  output logic [NSLOT-1:0]      mask_set_valid_o,
+  output logic [NSLOT*26-1:0]   mask_set_o,
+  input  logic [N_LOG2-1:0]     rd_x_i,
+  input  logic [N_LOG2-1:0]     rd_y_i,
+  output logic [23:0]           rd_rgb_o
+);
+
+  logic                 frame_start_q, poly_valid_q, cfg_valid_q;
+  logic [WIN_W-1:0]     poly_q;
+  logic [NPIX-1:0]      pixel_stall_q;
+  logic [2:0]           cfg_target_q;
+  logic [31:0]          cfg_addr_q;
+  logic [64:0]          cfg_data_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      frame_start_q <= 1'b0;
+      poly_valid_q  <= 1'b0;
+      poly_q        <= '0;
+      pixel_stall_q <= '0;
+      cfg_valid_q   <= 1'b0;
+      cfg_target_q  <= '0;
+      cfg_addr_q    <= '0;
+      cfg_data_q    <= '0;
+    end else begin
+      frame_start_q <= frame_start_i;
+      poly_valid_q  <= poly_valid_i;
+      poly_q        <= poly_i;
+      pixel_stall_q <= pixel_stall_i;
+      cfg_valid_q   <= cfg_valid_i;
+      cfg_target_q  <= cfg_target_i;
+      cfg_addr_q    <= cfg_addr_i;
+      cfg_data_q    <= cfg_data_i;
+    end
+  end
+
+  qt_raster #(
+    .N_LOG2      (N_LOG2),
+    .TREE_LEVELS (TREE_LEVELS)
+  ) u_raster (
+    .clk_i            (clk_i),
+    .rst_ni           (rst_ni),
+    .frame_start_i    (frame_start_q),
+    .poly_valid_i     (poly_valid_q),
+    .poly_i           (poly_q),
+    .poly_ready_o     (poly_ready_o),
+    .pixel_stall_i    (pixel_stall_q),
+    .cfg_valid_i      (cfg_valid_q),
+    .cfg_target_i     (cfg_target_q),
+    .cfg_addr_i       (cfg_addr_q),
+    .cfg_data_i       (cfg_data_q),
+    .busy_o           (busy_o),
+    .pe_load_valid_o  (pe_load_valid_o),
+    .pe_load_mask_o   (pe_load_mask_o),
+    .pe_emit_valid_o  (pe_emit_valid_o),
+    .pe_emit_child_o  (pe_emit_child_o),
+    .pe_emit_full_o   (pe_emit_full_o),
+    .pe_emit_data_o   (pe_emit_data_o),
+    .px_valid_o       (px_valid_o),
+    .px_data_o        (px_data_o),
+    .px_fresh_o       (px_fresh_o),
+    .px_full_o        (px_full_o),
+    .mask_set_valid_o (mask_set_valid_o),
+    .mask_set_o       (mask_set_o),
+    .rd_x_i           (rd_x_i),
+    .rd_y_i           (rd_y_i),
+    .rd_rgb_o         (rd_rgb_o)
+  );
+
+endmodule
