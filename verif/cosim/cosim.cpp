@@ -156,6 +156,10 @@ CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<
   const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
   quad::PixelFrame<RtlArith> pixels;
   pixels.begin(frame_for_tables, cfg.raster_log2);
+  if (pixels.covers().size() > kRtlLightCovers)
+    throw InputError("", "light_points", "the light points touch " + std::to_string(pixels.covers().size()) +
+                                             " pixels; the RTL's light-cover table (LIGHT_COVERS) holds " +
+                                             std::to_string(kRtlLightCovers));
   r.rtl = rtl.run(roots, pixels, stalls, max_cycles);
   pixels.begin(frame_for_tables, cfg.raster_log2);  // the model starts from the same tables, cleared states
   r.model = model_trace(arch, roots, pixels, stalls, 2, &r.stats);

@@ -34,6 +34,10 @@ inline RecordLayout rtl_layout() {
   return RecordLayout(hls::QuadFormatFine::kParamWidth, hls::QuadFormatFine::kGradientWidth);
 }
 
+// Entries of the RTL's light-cover table (qt_raster parameter LIGHT_COVERS, its default): one per
+// pixel that a light point touches. A frame with more lit pixels cannot be co-simulated.
+constexpr std::size_t kRtlLightCovers = 4096;
+
 struct StallConfig {
   std::uint32_t seed = 1;
   int input_gap_percent = 0;

@@ -62,7 +62,13 @@ int CosimCommand::run() {
   long long records = 0, mismatches = 0, bad_cycles = 0;
   std::string first;
   for (std::size_t k = 0; k < jobs.size(); ++k) {
-    const cosim::CosimResult r = cosim::cosim_frame(jobs.screen_frame(k), *rtl, cfg, stalls);
+    cosim::CosimResult r;
+    try {
+      r = cosim::cosim_frame(jobs.screen_frame(k), *rtl, cfg, stalls);
+    } catch (const InputError& e) {
+      if (!e.file().empty() || e.where() == "--arch") throw;
+      throw InputError(input, "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)) + ", " + e.where(), e.rule());
+    }
     const double rtl_speed = r.rtl.seconds > 0 ? double(r.rtl.cycles) / r.rtl.seconds : 0;
     const double model_speed = r.model.seconds > 0 ? double(r.model.cycles) / r.model.seconds : 0;
     std::cout << std::setw(6) << jobs.frame(k) << std::setw(4) << jobs.channel(k) << std::setw(10) << r.comparison.records_compared

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.hpp"
 #include "cosim.hpp"
 #include "frame/screen_frame.hpp"
 #include "pipeline/scene_pipeline.hpp"
@@ -147,6 +148,28 @@ TEST(Cosim, StallsRandomGapsAndBackPressure) {
   for (int k = 0; k < 80; ++k) f.polygons.push_back(random_polygon(r, uniform(r, 0.02, 0.5), 10 + k));
   for (std::uint32_t seed : {11u, 12u})
     for (int t = 1; t <= 2; ++t) expect_equal(f, 6, t, StallConfig{seed, 35, 40});
+}
+
+// More lit pixels than the RTL's light-cover table holds: a clear input error before any cycle.
+TEST(Cosim, TooManyLitPixelsIsAnInputError) {
+  ScreenFrame f = empty_frame(512);
+  for (int k = 0; k < int(kRtlLightCovers) + 100; ++k) {
+    ScreenLightPoint l;
+    l.xs = -0.99 + 1.98 * double(k % 100) / 100.0;
+    l.ys = -0.99 + 1.98 * double(k / 100) / 100.0;
+    l.zs = 50;
+    l.ds = 0.003;  // a disc of 6 grid units: 3 sample columns (min(2048 Ds, 7), eq. 1)
+    l.colour = {1, 1, 1};
+    f.light_points.push_back(l);
+  }
+  auto rtl = make_rtl_runner(9, 1);
+  ASSERT_TRUE(rtl != nullptr);
+  try {
+    cosim_frame(f, *rtl, RtlConfig{9, 1}, {});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("light-cover table (LIGHT_COVERS) holds 4096"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Cosim, DepthComplexityTen) {
