@@ -66,10 +66,8 @@ int CompareCommand::run() {
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
-        if (classify && rows[k].ids_differ > 0) {
-          const EngineRun by_priority = priority_ref->render(f);
-          rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out, &by_priority.out);
-        }
+        if (classify && rows[k].ids_differ > 0)
+          rows[k].ids_priority_vs_depth = priority_vs_depth_ids(got.out, want.out, priority_ref->render(f).out);
         if (!out_dir.empty())
           write_png((std::filesystem::path(out_dir) / (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) +
                                                        "_diff.png")).string(),

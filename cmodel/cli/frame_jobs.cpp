@@ -49,12 +49,15 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
   return pipeline_->geometry(jobs_[k].first, jobs_[k].second, unused);
 }
 
-Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference, const RasterImage* priority_reference) {
-  Comparison c{frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), 0};
-  if (priority_reference && c.ids_differ > 0)
-    for (std::size_t k = 0; k < got.ids.id.size(); ++k)
-      if (got.ids.id[k] != reference.ids.id[k] && priority_reference->ids.id[k] != reference.ids.id[k]) ++c.ids_priority_vs_depth;
-  return c;
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {
+  return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), 0};
+}
+
+long priority_vs_depth_ids(const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference) {
+  long count = 0;
+  for (std::size_t k = 0; k < got.ids.id.size(); ++k)
+    if (got.ids.id[k] != reference.ids.id[k] && priority_reference.ids.id[k] != reference.ids.id[k]) ++count;
+  return count;
 }
 
 nlohmann::ordered_json comparison_json(const Comparison& c) {

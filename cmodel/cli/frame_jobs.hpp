@@ -52,9 +52,10 @@ struct Comparison {
   // followed the priority order where it disagrees with depth.
   long ids_priority_vs_depth = 0;
 };
-// `priority_reference`: the same reference with visibility by priority (nullptr: not classified).
-Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference,
-                       const RasterImage* priority_reference = nullptr);
+Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference);
+// Pixels whose id differs between `got` and `reference` and between `priority_reference` (the same
+// reference with visibility by priority) and `reference`: Comparison::ids_priority_vs_depth.
+long priority_vs_depth_ids(const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference);
 nlohmann::ordered_json comparison_json(const Comparison& c);
 
 // Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.

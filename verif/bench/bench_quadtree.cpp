@@ -14,30 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "bench_inputs.hpp"
 #include "engine/engine.hpp"
-#include "pipeline/scene_pipeline.hpp"
-#include "scene/scene_loader.hpp"
 
 namespace {
 
 using cig::ScreenFrame;
-
-std::string source_path(const std::string& relative) { return std::string(CIG_SOURCE_DIR) + "/" + relative; }
-
-const ScreenFrame& airfield_frame() {
-  static const ScreenFrame frame = [] {
-    static const cig::Scene scene = cig::load_scene(source_path("scenes/airfield.json"));
-    const cig::ScenePipeline pipeline(scene);
-    nlohmann::ordered_json unused;
-    return pipeline.geometry(0, 1, unused);
-  }();
-  return frame;
-}
-
-const ScreenFrame& depth10_frame() {
-  static const ScreenFrame frame = cig::load_polygon_list(source_path("scenes/stress/depth10.polys.json"));
-  return frame;
-}
+using cig::bench::airfield_frame;
+using cig::bench::depth10_frame;
 
 void run_engine(benchmark::State& state, const std::string& engine_name, const cig::EngineOptions& options,
                 const ScreenFrame& (*frame)()) {
@@ -71,20 +55,10 @@ void register_all() {
         cig::EngineOptions o;
         o.params["masks"] = masks;
         const std::string name = std::string(engine) + "/" + input + "/masks-" + masks;
-        benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& s) { run_engine(s, engine, o, frame); })
-            ->Unit(benchmark::kMillisecond)
-            ->MeasureProcessCPUTime()
-            ->UseRealTime();
+        cig::bench::register_case(name, [=](benchmark::State& s) { run_engine(s, engine, o, frame); });
       }
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return cig::bench::run_benchmarks(argc, argv, register_all); }

@@ -15,31 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "bench_inputs.hpp"
 #include "engine/engine.hpp"
-#include "pipeline/scene_pipeline.hpp"
-#include "scene/scene_loader.hpp"
 
 namespace {
 
 using cig::ScreenFrame;
-
-std::string source_path(const std::string& relative) { return std::string(CIG_SOURCE_DIR) + "/" + relative; }
-
-// Built on first use, so that a filtered run loads only what it needs.
-const ScreenFrame& airfield_frame() {
-  static const ScreenFrame frame = [] {
-    static const cig::Scene scene = cig::load_scene(source_path("scenes/airfield.json"));
-    const cig::ScenePipeline pipeline(scene);
-    nlohmann::ordered_json unused;
-    return pipeline.geometry(0, 1, unused);
-  }();
-  return frame;
-}
-
-const ScreenFrame& overload_frame() {
-  static const ScreenFrame frame = cig::load_polygon_list(source_path("scenes/stress/overload.polys.json"));
-  return frame;
-}
+using cig::bench::airfield_frame;
+using cig::bench::overload_frame;
 
 struct Case {
   std::string name, engine;
@@ -78,19 +61,9 @@ void register_all() {
                                                                                 {"overload", &overload_frame}};
   for (const auto& [input, frame] : inputs)
     for (const Case& c : cases)
-      benchmark::RegisterBenchmark((c.name + "/" + input).c_str(),
-                                   [c, frame = frame](benchmark::State& s) { run_engine(s, c, frame); })
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
+      cig::bench::register_case(c.name + "/" + input, [c, frame = frame](benchmark::State& s) { run_engine(s, c, frame); }, false);
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return cig::bench::run_benchmarks(argc, argv, register_all); }

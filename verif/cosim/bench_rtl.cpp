@@ -15,17 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_inputs.hpp"
 #include "cosim.hpp"
-#include "frame/screen_frame.hpp"
-#include "pipeline/scene_pipeline.hpp"
-#include "scene/scene_loader.hpp"
 
 namespace {
 
 using cig::ScreenFrame;
 using Roots = std::vector<cig::hls::QuadWindow<cig::cosim::RtlArith>>;
-
-std::string source_path(const std::string& relative) { return std::string(CIG_SOURCE_DIR) + "/" + relative; }
 
 ScreenFrame random_frame() {
   std::mt19937_64 r(2);
@@ -46,14 +42,18 @@ ScreenFrame random_frame() {
   return f;
 }
 
-ScreenFrame airfield_frame() {
-  const cig::Scene scene = cig::load_scene(source_path("scenes/airfield.json"));
-  const cig::ScenePipeline pipeline(scene);
-  nlohmann::ordered_json unused;
-  return pipeline.geometry(0, 1, unused);
+// Built on first use (a filtered run loads only what it needs).
+const ScreenFrame& random150_frame() {
+  static const ScreenFrame frame = random_frame();
+  return frame;
+}
+const ScreenFrame& overlap_frame() {
+  static const ScreenFrame frame = cig::load_polygon_list(cig::bench::source_path("scenes/small/overlap.polys.json"));
+  return frame;
 }
 
-void run_rtl(benchmark::State& state, const ScreenFrame& frame, int raster_log2, int tree_levels) {
+void run_rtl(benchmark::State& state, const ScreenFrame& (*input)(), int raster_log2, int tree_levels) {
+  const ScreenFrame& frame = input();
   auto rtl = cig::cosim::make_rtl_runner(raster_log2, tree_levels);
   if (!rtl) {
     state.SkipWithError("this build has no such RTL configuration");
@@ -77,31 +77,17 @@ void run_rtl(benchmark::State& state, const ScreenFrame& frame, int raster_log2,
 }
 
 void register_all() {
-  static const ScreenFrame random = random_frame();
-  static const ScreenFrame overlap = cig::load_polygon_list(source_path("scenes/small/overlap.polys.json"));
-  static const ScreenFrame airfield = airfield_frame();
-  static const ScreenFrame depth10 = cig::load_polygon_list(source_path("scenes/stress/depth10.polys.json"));
   struct Case {
     const char* name;
-    const ScreenFrame* frame;
+    const ScreenFrame& (*frame)();
     int n, t;
   };
-  for (const Case& c : {Case{"rtl/random/6p", &random, 6, 1}, Case{"rtl/random/4p2t", &random, 6, 2}, Case{"rtl/overlap/6p", &overlap, 6, 1},
-                        Case{"rtl/airfield/9p", &airfield, 9, 1}, Case{"rtl/airfield/7p2t", &airfield, 9, 2},
-                        Case{"rtl/depth10/9p", &depth10, 9, 1}})
-    benchmark::RegisterBenchmark(c.name, [c](benchmark::State& s) { run_rtl(s, *c.frame, c.n, c.t); })
-        ->Unit(benchmark::kMillisecond)
-        ->MeasureProcessCPUTime()
-        ->UseRealTime();
+  for (const Case& c : {Case{"rtl/random/6p", &random150_frame, 6, 1}, Case{"rtl/random/4p2t", &random150_frame, 6, 2},
+                        Case{"rtl/overlap/6p", &overlap_frame, 6, 1}, Case{"rtl/airfield/9p", &cig::bench::airfield_frame, 9, 1},
+                        Case{"rtl/airfield/7p2t", &cig::bench::airfield_frame, 9, 2}, Case{"rtl/depth10/9p", &cig::bench::depth10_frame, 9, 1}})
+    cig::bench::register_case(c.name, [c](benchmark::State& s) { run_rtl(s, c.frame, c.n, c.t); });
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return cig::bench::run_benchmarks(argc, argv, register_all); }

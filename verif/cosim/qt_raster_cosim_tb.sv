@@ -84,37 +84,20 @@ module qt_raster_cosim_tb #(
     end
   end
 
+  // Every port of the same name passes through (.*); the stimulus goes through the registers.
   qt_raster #(
     .N_LOG2      (N_LOG2),
     .TREE_LEVELS (TREE_LEVELS)
   ) u_raster (
-    .clk_i            (clk_i),
-    .rst_ni           (rst_ni),
-    .frame_start_i    (frame_start_q),
-    .poly_valid_i     (poly_valid_q),
-    .poly_i           (poly_q),
-    .poly_ready_o     (poly_ready_o),
-    .pixel_stall_i    (pixel_stall_q),
-    .cfg_valid_i      (cfg_valid_q),
-    .cfg_target_i     (cfg_target_q),
-    .cfg_addr_i       (cfg_addr_q),
-    .cfg_data_i       (cfg_data_q),
-    .busy_o           (busy_o),
-    .pe_load_valid_o  (pe_load_valid_o),
-    .pe_load_mask_o   (pe_load_mask_o),
-    .pe_emit_valid_o  (pe_emit_valid_o),
-    .pe_emit_child_o  (pe_emit_child_o),
-    .pe_emit_full_o   (pe_emit_full_o),
-    .pe_emit_data_o   (pe_emit_data_o),
-    .px_valid_o       (px_valid_o),
-    .px_data_o        (px_data_o),
-    .px_fresh_o       (px_fresh_o),
-    .px_full_o        (px_full_o),
-    .mask_set_valid_o (mask_set_valid_o),
-    .mask_set_o       (mask_set_o),
-    .rd_x_i           (rd_x_i),
-    .rd_y_i           (rd_y_i),
-    .rd_rgb_o         (rd_rgb_o)
+    .frame_start_i (frame_start_q),
+    .poly_valid_i  (poly_valid_q),
+    .poly_i        (poly_q),
+    .pixel_stall_i (pixel_stall_q),
+    .cfg_valid_i   (cfg_valid_q),
+    .cfg_target_i  (cfg_target_q),
+    .cfg_addr_i    (cfg_addr_q),
+    .cfg_data_i    (cfg_data_q),
+    .*
   );
 
 endmodule
