@@ -48,6 +48,7 @@ int CompareCommand::run() {
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
 
   std::vector<Comparison> rows(jobs.size());
+  const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
   std::mutex mutex;
@@ -55,19 +56,17 @@ int CompareCommand::run() {
     try {
       auto eng = make_engine(engine.engine, eo);
       auto ref = make_engine("float", ro);
-      // The same reference with visibility by priority, to classify differing ids (only for a
-      // z-buffered reference, and only when some id differs).
+      // The same reference with visibility by priority, to attribute the error that comes from
+      // the engines' visibility by list order (only for a z-buffered reference).
       EngineOptions po = ro;
       po.params["visibility"] = "priority";
       auto priority_ref = make_engine("float", po);
-      const bool classify = ro.params.count("visibility") == 0;
       for (std::size_t k; (k = next++) < jobs.size();) {
         const ScreenFrame f = jobs.screen_frame(k);
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
-        if (classify && rows[k].ids_differ > 0)
-          rows[k].ids_priority_vs_depth = priority_vs_depth_ids(got.out, want.out, priority_ref->render(f).out);
+        if (classify && rows[k].error.sum_squared > 0) attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
         if (!out_dir.empty())
           write_png((std::filesystem::path(out_dir) / (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) +
                                                        "_diff.png")).string(),
@@ -109,21 +108,32 @@ int CompareCommand::run() {
             << totals.worst_channel << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B "
             << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
             << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
-            << "      of those, " << totals.ids_priority_vs_depth
+            << "      of those, " << totals.priority.ids_priority_vs_depth
             << " where the reference itself shows another polygon with visibility by priority order instead of"
                " the z-buffer (priority order against the z-buffer)\n";
-  const double share = all.sum_squared > 0 ? 100.0 * all.sum_squared_ids_differ / all.sum_squared : 0.0;
-  std::cout << "      error attribution: " << std::setprecision(1) << share
-            << " % of the squared error lies in the " << all.pixels_ids_differ
-            << " pixels whose visible polygon differs (visibility, coverage), " << 100.0 - share
-            << " % in pixels showing the same polygon (shading, fog, quantization)\n";
+  // The squared error in three parts: pixels showing another polygon; pixels showing the same
+  // polygon whose colour the reference changes under visibility by priority (light points and
+  // minority samples ordered against the z-buffer); the rest.
+  auto share = [&](double part) { return all.sum_squared > 0 ? 100.0 * part / all.sum_squared : 0.0; };
+  const double ids_share = share(all.sum_squared_ids_differ);
+  const double priority_share = share(totals.priority.sum_squared_priority_colour);
+  std::cout << "      error attribution: " << std::setprecision(1) << ids_share << " % of the squared error lies in the "
+            << all.pixels_ids_differ << " pixels whose visible polygon differs (visibility, coverage), ";
+  if (classify)
+    std::cout << priority_share << " % in the " << totals.priority.pixels_priority_colour
+              << " pixels showing the same polygon whose colour visibility by priority order changes in the reference"
+                 " (light points, partly covered pixels), ";
+  std::cout << 100.0 - ids_share - (classify ? priority_share : 0.0)
+            << " % in the other pixels (shading, fog, quantization)\n";
   rep["psnr_all"] = all.psnr();
   rep["psnr_min"] = totals.min_psnr;
   rep["pixels"] = all.pixels;
   rep["pixels_over_2lsb"] = all.pixels_over_2lsb;
   rep["ids_differ"] = totals.ids_differ;
-  rep["ids_priority_vs_depth"] = totals.ids_priority_vs_depth;
-  rep["squared_error_share_ids_differ"] = all.sum_squared > 0 ? all.sum_squared_ids_differ / all.sum_squared : 0.0;
+  rep["ids_priority_vs_depth"] = totals.priority.ids_priority_vs_depth;
+  rep["pixels_priority_colour"] = totals.priority.pixels_priority_colour;
+  rep["squared_error_share_ids_differ"] = ids_share / 100.0;
+  rep["squared_error_share_priority_colour"] = priority_share / 100.0;
   if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
   return 0;
 }

@@ -53,11 +53,8 @@ Comparison compare_run(int frame, int channel, const RasterImage& got, const Ras
   return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), 0};
 }
 
-long priority_vs_depth_ids(const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference) {
-  long count = 0;
-  for (std::size_t k = 0; k < got.ids.id.size(); ++k)
-    if (got.ids.id[k] != reference.ids.id[k] && priority_reference.ids.id[k] != reference.ids.id[k]) ++count;
-  return count;
+void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference) {
+  c.priority = attribute_priority(got.image, got.ids, reference.image, reference.ids, priority_reference.image, priority_reference.ids);
 }
 
 nlohmann::ordered_json comparison_json(const Comparison& c) {
@@ -67,14 +64,15 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
           {"max_abs", {c.error.max_abs[0], c.error.max_abs[1], c.error.max_abs[2]}},
           {"pixels_over_2lsb", c.error.pixels_over_2lsb},
           {"ids_differ", c.ids_differ},
-          {"ids_priority_vs_depth", c.ids_priority_vs_depth}};
+          {"ids_priority_vs_depth", c.priority.ids_priority_vs_depth},
+          {"pixels_priority_colour", c.priority.pixels_priority_colour}};
 }
 
 void ComparisonTotals::add(const Comparison& c) {
   all.add(c.error);
   ++images;
   ids_differ += c.ids_differ;
-  ids_priority_vs_depth += c.ids_priority_vs_depth;
+  priority.add(c.priority);
   if (c.error.psnr() < min_psnr) {
     min_psnr = c.error.psnr();
     worst_frame = c.frame;

@@ -47,21 +47,19 @@ struct Comparison {
   int frame = 0, channel = 0;
   ImageError error;
   long ids_differ = 0;
-  // Of those, the pixels where the reference itself shows another polygon when its visibility
-  // follows the priority list instead of the z-buffer (Visibility::kPriority): the engine
-  // followed the priority order where it disagrees with depth.
-  long ids_priority_vs_depth = 0;
+  // Against a z-buffered reference: the part that comes from visibility by priority order.
+  PriorityAttribution priority;
 };
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference);
-// Pixels whose id differs between `got` and `reference` and between `priority_reference` (the same
-// reference with visibility by priority) and `reference`: Comparison::ids_priority_vs_depth.
-long priority_vs_depth_ids(const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference);
+// Fills c.priority from `priority_reference` (the same reference with visibility by priority).
+void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference);
 nlohmann::ordered_json comparison_json(const Comparison& c);
 
 // Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.
 struct ComparisonTotals {
   ImageError all;
-  long images = 0, ids_differ = 0, ids_priority_vs_depth = 0;
+  long images = 0, ids_differ = 0;
+  PriorityAttribution priority;
   double min_psnr = 1e9;
   int worst_frame = 0, worst_channel = 0;
   void add(const Comparison& c);

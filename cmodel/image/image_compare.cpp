@@ -51,6 +51,40 @@ ImageError compare_images(const Image& got, const Image& reference) {
   return compare_images(got, reference, IdBuffer(), IdBuffer());
 }
 
+void PriorityAttribution::add(const PriorityAttribution& a) {
+  ids_priority_vs_depth += a.ids_priority_vs_depth;
+  pixels_priority_colour += a.pixels_priority_colour;
+  sum_squared_priority_colour += a.sum_squared_priority_colour;
+}
+
+PriorityAttribution attribute_priority(const Image& got, const IdBuffer& got_ids, const Image& reference,
+                                       const IdBuffer& reference_ids, const Image& priority, const IdBuffer& priority_ids) {
+  const std::size_t n = reference_ids.id.size();
+  if (got.rgb.size() != reference.rgb.size() || priority.rgb.size() != reference.rgb.size() || got_ids.id.size() != n ||
+      priority_ids.id.size() != n || reference.rgb.size() != 3 * n)
+    throw std::runtime_error("attribute_priority: images differ in size");
+  PriorityAttribution a;
+  for (std::size_t p = 0; p < n; ++p) {
+    if (got_ids.id[p] != reference_ids.id[p]) {
+      a.ids_priority_vs_depth += priority_ids.id[p] != reference_ids.id[p];
+      continue;
+    }
+    bool priority_changes = false;
+    double sq = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int r = reference.rgb[3 * p + c];
+      priority_changes = priority_changes || std::abs(int(priority.rgb[3 * p + c]) - r) > 2;
+      const int d = int(got.rgb[3 * p + c]) - r;
+      sq += double(d) * d;
+    }
+    if (priority_changes) {
+      ++a.pixels_priority_colour;
+      a.sum_squared_priority_colour += sq;
+    }
+  }
+  return a;
+}
+
 Image difference_image(const Image& got, const Image& reference, int gain) {
   Image d(got.width, got.height);
   for (std::size_t i = 0; i < d.rgb.size(); ++i)

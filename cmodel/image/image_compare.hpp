@@ -30,4 +30,22 @@ Image difference_image(const Image& got, const Image& reference, int gain);
 // Pixels whose id differs.
 long differing_ids(const IdBuffer& got, const IdBuffer& reference);
 
+// What of an engine's error against a z-buffered reference comes from the engines' visibility by
+// priority order, found with the same reference rendered with visibility by priority (`priority`):
+//  * ids_priority_vs_depth: pixels whose id differs between engine and reference, and between
+//    the priority reference and the reference (the engine followed the list where it disagrees
+//    with depth);
+//  * pixels_priority_colour, sum_squared_priority_colour: pixels where engine and reference show
+//    the same polygon but the priority reference's colour differs from the reference's by more
+//    than 2 LSB (a light point that list order shows and the z-buffer hides, or the reverse; a
+//    polygon owning a minority of the pixel's samples), and the engine's squared error there.
+struct PriorityAttribution {
+  long ids_priority_vs_depth = 0;
+  long pixels_priority_colour = 0;
+  double sum_squared_priority_colour = 0;
+  void add(const PriorityAttribution& a);
+};
+PriorityAttribution attribute_priority(const Image& got, const IdBuffer& got_ids, const Image& reference,
+                                       const IdBuffer& reference_ids, const Image& priority, const IdBuffer& priority_ids);
+
 }  // namespace cig

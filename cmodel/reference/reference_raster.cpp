@@ -174,28 +174,33 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
   for (const auto& p : frame.polygons)
     if (setup_coverage(p, lattice).empty) ++stats.polygons_empty;
 
-  // Light points are points: visible or hidden as a whole. A light is drawn (its whole disc)
-  // when it is at least as near as the polygon surface at the sample nearest its centre; the
-  // disc is a rendering of a point, so the ground behind a runway light's lower half does not
-  // cut it.
-  std::vector<char> light_visible(frame.light_points.size(), 0);
-  for (std::size_t li = 0; li < frame.light_points.size(); ++li) {
+  // Light points are points. Under kDepth a light is visible or hidden as a whole: drawn (its
+  // whole disc) when it is at least as near as the polygon surface at its centre, the exact
+  // position and not the nearest sample: a runway light 0.3 m above the ground seen at a grazing
+  // angle lies less than half a sample above its ground point, so the sample nearest it can be
+  // nearer ground and would hide it at random. The disc is a rendering of a point, so the ground
+  // behind a light's lower half does not cut it. Under kPriority lights take part in the list
+  // order per sample instead (below), as in the engines.
+  std::vector<char> light_visible(frame.light_points.size(), 1);
+  for (std::size_t li = 0; li < frame.light_points.size() && visibility == Visibility::kDepth; ++li) {
     double cx, cy, r;
     light_geometry(frame.light_points[li], cx, cy, r);
     const int ic = int(std::clamp(std::round(cx), 0.0, double(m - 1)));
     const int jc = int(std::clamp(std::round(cy), 0.0, double(m - 1)));
-    const int strip = std::min(strips - 1, jc / strip_rows);
-    double surface = 0;  // w of the nearest polygon at (ic, jc); 0: none
-    for (std::uint32_t b = poly_bins.first[std::size_t(strip)]; b < poly_bins.first[std::size_t(strip) + 1]; ++b) {
+    // cy lies between two sample rows, which may belong to two strips: look in both bins.
+    const int strip_lo = std::min(strips - 1, int(std::clamp(std::floor(cy), 0.0, double(m - 1))) / strip_rows);
+    const int strip_hi = std::min(strips - 1, int(std::clamp(std::ceil(cy), 0.0, double(m - 1))) / strip_rows);
+    double surface = 0;  // w of the nearest polygon at (cx, cy); 0: none
+    for (std::uint32_t b = poly_bins.first[std::size_t(strip_lo)]; b < poly_bins.first[std::size_t(strip_hi) + 1]; ++b) {
       const std::size_t pi = poly_bins.items[b];
       const ScreenPolygon& p = frame.polygons[pi];
-      if (!screen_door_passes(p.opaque, ic, jc)) continue;
+      if (!screen_door_passes(p.opaque, ic, jc)) continue;  // a transparent polygon's pattern at that pixel
       const CoverageSetup cov = setup_coverage(p, lattice);
-      if (cov.empty || !(cov.ymin <= jc && jc <= cov.ymax) || !cov.covers(double(ic), double(jc))) continue;
+      if (cov.empty || !(cov.ymin <= cy && cy <= cov.ymax) || !cov.covers(cx, cy)) continue;
       const DepthPlane dp = &depth_source == &frame
                                 ? fit_depth_plane(cov, p)
                                 : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), p);
-      surface = std::max(surface, dp.at(double(ic), double(jc)));
+      surface = std::max(surface, dp.at(cx, cy));
     }
     light_visible[li] = 1.0 / frame.light_points[li].zs >= surface;
   }
@@ -262,7 +267,12 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
           const double dx = double(i) - cx, dy = double(j) - cy;
           if (dx * dx + dy * dy > r * r) continue;
           const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
-          if (light[idx] >= 0 && wl < 1.0 / frame.light_points[std::size_t(light[idx])].zs) continue;
+          // kDepth: the nearest light keeps the sample (ties: the later one); kPriority: the light
+          // earliest in the list (ties: the earlier light), as the engines' light point units.
+          if (light[idx] >= 0 && (visibility == Visibility::kPriority
+                                      ? frame.light_points[std::size_t(light[idx])].priority <= l.priority
+                                      : wl < 1.0 / frame.light_points[std::size_t(light[idx])].zs))
+            continue;
           if (light[idx] < 0) ++stats.light_samples;
           light[idx] = std::int32_t(li);
         }
@@ -282,7 +292,10 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
             const std::int32_t o = owner[idx];
             ids[nid++] = o;
             Rgb c;
-            if (light[idx] >= 0) {
+            // kPriority: a polygon earlier in the list than the light hides it at this sample.
+            const bool light_shows = light[idx] >= 0 && (visibility == Visibility::kDepth || o < 0 ||
+                                                         o >= frame.light_points[std::size_t(light[idx])].priority);
+            if (light_shows) {
               const ScreenLightPoint& l = frame.light_points[std::size_t(light[idx])];
               const double f = fog_factor(fog, l.zs);
               c = (1 - f) * l.intensity * l.colour + f * fog.colour;

@@ -9,8 +9,8 @@
 //    linearly along the row; colour = polygon colour x I;
 //  * fog: linear in eye depth between fog start and end, towards the fog colour;
 //  * light points: discs of diameter D = min(2048*Ds, 7) grid units (eq. 1), visible or hidden as
-//    a whole: drawn when the light is at least as near as the polygon surface at the sample
-//    nearest its centre (a point source; its exaggerated disc is not cut by the ground behind it);
+//    a whole: drawn when the light is at least as near as the polygon surface at its centre
+//    (a point source; its exaggerated disc is not cut by the ground behind it);
 //  * non-opaque polygons are screen-door transparent (half the samples of a fixed checkerboard);
 //  * resolve: box filter over the 16 samples, rounded to 8 bits; the id of a pixel is the
 //    polygon owning most of its samples (ties: the earlier polygon; background loses ties).
@@ -40,7 +40,9 @@ struct RasterImage {
 // the list that covers a sample own it, as the raster engines do (they are fed in priority order
 // and trust it): with the same coverage, the pixels where the two differ are exactly those where
 // the priority order and the z-buffer disagree, which is how an engine's residual is classified.
-// Fog and light points use the depth of the owning polygon either way.
+// Light points follow the list too under kPriority: a sample keeps the light earliest in the list,
+// which shows unless a polygon earlier than it (index < its priority) owns the sample (the
+// engines' light point units). Fog uses the depth of the owning polygon either way.
 enum class Visibility { kDepth, kPriority };
 
 RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility = Visibility::kDepth);

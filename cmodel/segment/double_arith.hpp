@@ -51,11 +51,13 @@ struct DoubleSegmentArith {
   }
   static double step(double x, double s, int rows) { return x + rows * s; }
   static double lerp_x(double x0, double x1, int num, int den) { return x0 + (x1 - x0) * num / den; }
+  // t clamped to the edge, as the fixed-point intensity_at/depth_at.
+  static double along_edge(double yb, double ye, int yt_quarter) { return std::clamp(0.25 * yt_quarter - yb, 0.0, ye - yb); }
   static double intensity_at(double ib, double ie, double yb, double ye, int yt_quarter) {
-    return std::clamp(ib + (ie - ib) * (0.25 * yt_quarter - yb) / (ye - yb), 0.0, 255.0);
+    return std::clamp(ib + (ie - ib) * along_edge(yb, ye, yt_quarter) / (ye - yb), 0.0, 255.0);
   }
   static double depth_at(double zb, double ze, double yb, double ye, int yt_quarter) {
-    return std::max(1e-30, zb + (ze - zb) * (0.25 * yt_quarter - yb) / (ye - yb));
+    return std::max(1e-30, zb + (ze - zb) * along_edge(yb, ye, yt_quarter) / (ye - yb));
   }
   static double column_x(const RowGeometry& g, int i) { return 0.5 * g.row_half(i); }
   static double midpoint(double a, double b) { return 0.5 * (a + b); }

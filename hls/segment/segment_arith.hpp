@@ -111,11 +111,18 @@ struct FixedSegmentArith {
     return X(x0 + fixed_div<X>(scaled, Fixed<3, 3>::from_raw(Int<3>(den))));
   }
 
-  // Eq. 3: I at yt (half units) on an edge from (yb, ib) to (ye, ie), clamped to [0, 255].
+  // Where on the edge eq. 3-4 are evaluated: yt (quarter units) below yb, clamped to the edge
+  // [0, 4 (ye - yb)]. The edge that holds a segment's middle row can end inside the line; without
+  // the clamp I and Z would extrapolate past its end (t up to 16 on sub-row edges).
+  static int along_edge_quarter(const Coord& yb, const Coord& ye, int yt_quarter) {
+    const int t4 = yt_quarter - 4 * int(yb.value()), dy4 = 4 * (int(ye.value()) - int(yb.value()));
+    return t4 < 0 ? 0 : (t4 > dy4 ? dy4 : t4);
+  }
+  // Eq. 3: I at yt (quarter units) on an edge from (yb, ib) to (ye, ie), clamped to [0, 255].
   static Intensity intensity_at(const Level& ib, const Level& ie, const Coord& yb,
                                                   const Coord& ye, int yt_quarter) {
     const Int<10> di = Int<10>(int(ie.value()) - int(ib.value()));
-    const Int<16> t4 = Int<16>(yt_quarter - 4 * int(yb.value()));  // quarter units below yb
+    const Int<16> t4 = Int<16>(along_edge_quarter(yb, ye, yt_quarter));  // quarter units below yb
     const Int<15> dy4 = Int<15>(4 * (int(ye.value()) - int(yb.value())));
     const Int<26> num = di * t4;
     const auto along = fixed_div<Fixed<Intensity::width + 2, 10, Intensity::quant, Overflow::kSat>>(
@@ -125,7 +132,7 @@ struct FixedSegmentArith {
   // Eq. 4 on e8m7 values.
   static Depth depth_at(const Depth& zb, const Depth& ze, const Coord& yb, const Coord& ye,
                                           int yt_quarter) {
-    return zfloat_lerp(zb, ze, Int<16>(yt_quarter - 4 * int(yb.value())), Int<16>(4 * (int(ye.value()) - int(yb.value()))));
+    return zfloat_lerp(zb, ze, Int<16>(along_edge_quarter(yb, ye, yt_quarter)), Int<16>(4 * (int(ye.value()) - int(yb.value()))));
   }
 
   // ---- Video channel ----

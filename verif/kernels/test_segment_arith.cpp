@@ -503,12 +503,14 @@ void work_policy_ops(Digest* dg) {
                                                       i128(1) << (Fs - Fx)), xmin, xmax));
       add(raw_of(st));
     }
-    // Eq. 3 at a quarter-unit Y (anywhere within a row spacing of the edge: extrapolation too):
-    // ib + (ie - ib) * (yt - yb) / (ye - yb), one rounding, clamped to the Intensity format.
+    // Eq. 3 at a quarter-unit Y (anywhere within a row spacing of the edge; beyond its ends t is
+    // clamped to them): ib + (ie - ib) * (yt - yb) / (ye - yb), one rounding, clamped to the
+    // Intensity format.
     const int ib = int(below(rng, 256)), ie = t % 5 == 0 ? 255 : int(below(rng, 256));
     const int ytq = int(between(rng, 4 * ya - (1 << s), 4 * yb + (1 << s)));
     const I in = P::intensity_at(UInt<8>(ib), UInt<8>(ie), cya, cyb, ytq);
-    const i128 along = round_half_up(mul2k(i128(ie - ib) * (ytq - 4 * ya), Fi), 4 * dy);
+    const i128 t4 = std::clamp<i128>(ytq - 4 * ya, 0, 4 * dy);
+    const i128 along = round_half_up(mul2k(i128(ie - ib) * t4, Fi), 4 * dy);
     ASSERT_TRUE(raw_of(in) == clampi((i128(ib) << Fi) + along, 0, imax)) << ib << " " << ie << " " << ytq;
     add(raw_of(in));
     // Midpoint: (a + b) / 2, one rounding.

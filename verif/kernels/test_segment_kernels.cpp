@@ -588,10 +588,12 @@ class SegmentChecker {
   }
 
   // I and Z at one end: eq. 3-4 on the chain edge that holds the middle row rm, at the centre yt of
-  // the covered rows (yt_q = H_rf + H_rl quarter units: t4 = yt_q - 4 ya of dy4 = 4 dy).
+  // the covered rows (yt_q = H_rf + H_rl quarter units: t4 = yt_q - 4 ya of dy4 = 4 dy), with t4
+  // clamped to the edge [0, dy4] (the edge can end inside the line).
   void check_end(const I& in, const ZFloat& z, double tin, double tz, const RefEdge& r, i128 ytq,
                  const std::vector<RefEdge>& side) {
-    const i128 t4 = ytq - 4 * i128(r.ya), dy4 = 4 * i128(r.yb - r.ya);
+    const i128 dy4 = 4 * i128(r.yb - r.ya), t4_unclamped = ytq - 4 * i128(r.ya);
+    const i128 t4 = std::clamp<i128>(t4_unclamped, 0, dy4);
     // Fixed I: ia + (ib - ia) t4 / dy4 rounded half up once to Fi bits, saturated to the format
     // (0 .. 256 - LSB_I; the intermediate's saturation at +-512 cannot change the result, since
     // |ia| <= 255): bit for bit, i.e. error <= 1/2 LSB_I before saturation.
@@ -624,11 +626,11 @@ class SegmentChecker {
       ASSERT_LE(std::abs(zvalue(zc) - tz), bound) << "Z " << zc;
     }
     ++st_.ends;
-    st_.extrapolated += t > 1;
-    st_.max_t = std::max(st_.max_t, t);
+    st_.extrapolated += t4_unclamped != t4;
+    st_.max_t = std::max(st_.max_t, double(t4_unclamped) / double(dy4));
     // Information, not a bound: where a chain vertex lies between the middle row and yt, eq. 3 is
-    // evaluated beyond its edge's end (t > 1): how far that lands from the I of the polygon's own
-    // boundary at yt (on the edge that contains yt).
+    // evaluated at its edge's end (t clamped to 1): how far that lands from the I of the polygon's
+    // own boundary at yt (on the edge that contains yt).
     for (const RefEdge& b : side)
       if (4 * i128(b.ya) <= ytq && ytq <= 4 * i128(b.yb)) {
         const double own = b.ia + (b.ib - b.ia) * (double(ytq) / 4 - b.ya) / (b.yb - b.ya);
@@ -759,7 +761,7 @@ class SegmentChecker {
 template <class Fmt>
 void report_segments(const char* what, const SegStats& st) {
   std::printf("%s %s: %ld polygons, %ld segments, %ld rows, %ld samples; X error <= %.3f LSB_X (%.3f of the bound), "
-              "twin %.3f of its bound; %ld differing samples; I/Z ends %ld, %ld extrapolated (t up to %.1f, I up to %.1f "
+              "twin %.3f of its bound; %ld differing samples; I/Z ends %ld, %ld clamped to their edge (t up to %.1f unclamped; I up to %.1f "
               "off the boundary's at yt)\n",
               what, Fmt::name, st.polygons, st.segments, st.rows, st.samples, st.worst_x, st.worst_x_ratio,
               st.worst_twin_x, st.differing, st.ends, st.extrapolated, st.max_t, st.worst_i_off_boundary);
@@ -767,7 +769,7 @@ void report_segments(const char* what, const SegStats& st) {
   ::testing::Test::RecordProperty(p + "_worst_x_lsb", std::to_string(st.worst_x));
   ::testing::Test::RecordProperty(p + "_worst_x_of_bound", std::to_string(st.worst_x_ratio));
   ::testing::Test::RecordProperty(p + "_differing_samples", std::to_string(st.differing));
-  ::testing::Test::RecordProperty(p + "_ends_extrapolated", std::to_string(st.extrapolated));
+  ::testing::Test::RecordProperty(p + "_ends_clamped", std::to_string(st.extrapolated));
   ::testing::Test::RecordProperty(p + "_worst_i_off_boundary", std::to_string(st.worst_i_off_boundary));
 }
 
