@@ -19,6 +19,8 @@
 // set request raised if full and opaque, q leaves todo). When not busy, or freed this cycle, the
 // head of the input FIFO is popped, its mask word read (combinational, the memory as it was at
 // the start of the cycle) and todo = ~mask; a window with all four children masked is dropped.
+`include "qt_records.svh"
+
 module qt_pe #(
   parameter int N_LOG2 = 9,
   parameter int LEVEL = 1,                 // level of the children, 1..N_LOG2
@@ -29,8 +31,8 @@ module qt_pe #(
   parameter int AW = 22,
   parameter int PW = 53,
   parameter int GW = 38,
-  localparam int WIN_W = 24 + NE * EW + NP * PW + 45 + 2 * NE * AW + 2 * NP * GW + 10,
-  localparam int PIX_W = WIN_W + 16,
+  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW),
   localparam int NOUT = ROUTE_BY_QUADRANT ? 4 : 1
 ) (
   input  logic             clk_i,
@@ -63,7 +65,7 @@ module qt_pe #(
 
   localparam int K = N_LOG2 - LEVEL + 2;
   localparam bit PIXEL_LEVEL = LEVEL == N_LOG2;
-  localparam int OFF_POLY = 24 + NE * EW + NP * PW;
+  localparam int OFF_POLY = `QT_WIN_POLY_OFFSET(NE, NP, EW, PW);
   localparam int POLY_W = WIN_W - OFF_POLY;
   localparam logic [15:0] SCREEN_DOOR = 16'hA5A5;  // (di + dj) even: hls kScreenDoorSamples
 

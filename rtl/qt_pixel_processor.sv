@@ -22,6 +22,8 @@
 //
 // The fog table has 2^FOG_CODE_BITS entries addressed by the top FOG_CODE_BITS bits of the code:
 // 15 (the default) is the kernel's table; fewer only shrink the synthesis configuration.
+`include "qt_records.svh"
+
 module qt_pixel_processor #(
   parameter int N_LOG2 = 9,
   parameter int TREE_LEVELS = 1,
@@ -34,8 +36,8 @@ module qt_pixel_processor #(
   parameter int G = 16,
   parameter int LIGHT_COVERS = 4096,
   parameter int FOG_CODE_BITS = 15,
-  localparam int WIN_W = 24 + NE * EW + NP * PW + 45 + 2 * NE * AW + 2 * NP * GW + 10,
-  localparam int PIX_W = WIN_W + 16
+  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW)
 ) (
   input  logic              clk_i,
   input  logic              clear_i,          // frame start

@@ -11,6 +11,8 @@
 // the cycle, and the mask memory writes the cycle's set requests and their closure at the edge.
 // PE numbering (= the model's): pipeline PEs 0..PIPE_LEVELS-1 (level 1 first), then the tree by
 // depth; leaf PE m feeds pixel processor m.
+`include "qt_records.svh"
+
 module qt_raster #(
   parameter int N_LOG2 = 9,
   parameter int TREE_LEVELS = 1,
@@ -24,8 +26,8 @@ module qt_raster #(
   parameter int G = 16,
   parameter int LIGHT_COVERS = 4096,
   parameter int FOG_CODE_BITS = 15,   // synthesis only: < 15 shrinks the fog table (not the kernel's)
-  localparam int WIN_W = 24 + NE * EW + NP * PW + 45 + 2 * NE * AW + 2 * NP * GW + 10,
-  localparam int PIX_W = WIN_W + 16,
+  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW),
   localparam int PIPE_LEVELS = N_LOG2 - TREE_LEVELS,
   localparam int NPE = PIPE_LEVELS + ((1 << (2 * TREE_LEVELS)) - 1) / 3,
   localparam int NPIX = 1 << (2 * (TREE_LEVELS - 1)),

@@ -4,6 +4,8 @@
 //   a[NE] AW | b[NE] AW | dp_di[NP] GW | dp_dj[NP] GW | w_exponent 10
 // The one place the RTL spells the layout out: the PE and the pixel processor read their fields
 // through this module, and the PE packs a child as {poly_o, f, d, y, x, level}.
+`include "qt_records.svh"
+
 module qt_window_fields #(
   parameter int NE = 8,
   parameter int NP = 2,
@@ -11,9 +13,9 @@ module qt_window_fields #(
   parameter int AW = 22,
   parameter int PW = 53,
   parameter int GW = 38,
-  localparam int WIN_W = 24 + NE * EW + NP * PW + 45 + 2 * NE * AW + 2 * NP * GW + 10,
+  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
   // The polygon's constants: everything from id up, copied unchanged from window to child.
-  localparam int OFF_POLY = 24 + NE * EW + NP * PW,
+  localparam int OFF_POLY = `QT_WIN_POLY_OFFSET(NE, NP, EW, PW),
   localparam int POLY_W = WIN_W - OFF_POLY
 ) (
   input  logic [WIN_W-1:0]   window_i,

@@ -50,7 +50,7 @@ for d in "${designs[@]}"; do
   log="$out/$d.log"
   # Pass 1: synthesis, statistics, the mapped netlist, the modules' parameters.
   cat > "$out/$d.ys" <<EOF
-read_verilog -sv $sources
+read_verilog -sv -I$root/rtl $sources
 hierarchy -check -top $args
 proc
 opt_expr

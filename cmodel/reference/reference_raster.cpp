@@ -171,8 +171,21 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
   });
   stats.polygons += frame.polygons.size();
   stats.light_points += frame.light_points.size();
-  for (const auto& p : frame.polygons)
-    if (setup_coverage(p, lattice).empty) ++stats.polygons_empty;
+  // Each polygon's edge setup and depth plane, once per frame: the light tests and every strip the
+  // polygon touches use them. The depth plane comes from depth_source (the exact vertices when
+  // `frame` is the snapped copy).
+  std::vector<CoverageSetup> coverage(frame.polygons.size());
+  std::vector<DepthPlane> depth_plane(frame.polygons.size());
+  for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
+    coverage[pi] = setup_coverage(frame.polygons[pi], lattice);
+    if (coverage[pi].empty) {
+      ++stats.polygons_empty;
+      continue;
+    }
+    depth_plane[pi] = &depth_source == &frame
+                          ? fit_depth_plane(coverage[pi], frame.polygons[pi])
+                          : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), frame.polygons[pi]);
+  }
 
   // Light points are points. Under kDepth a light is visible or hidden as a whole: drawn (its
   // whole disc) when it is at least as near as the polygon surface at its centre, the exact
@@ -193,14 +206,10 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
     double surface = 0;  // w of the nearest polygon at (cx, cy); 0: none
     for (std::uint32_t b = poly_bins.first[std::size_t(strip_lo)]; b < poly_bins.first[std::size_t(strip_hi) + 1]; ++b) {
       const std::size_t pi = poly_bins.items[b];
-      const ScreenPolygon& p = frame.polygons[pi];
-      if (!screen_door_passes(p.opaque, ic, jc)) continue;  // a transparent polygon's pattern at that pixel
-      const CoverageSetup cov = setup_coverage(p, lattice);
+      if (!screen_door_passes(frame.polygons[pi].opaque, ic, jc)) continue;  // a transparent polygon's pattern at that pixel
+      const CoverageSetup& cov = coverage[pi];
       if (cov.empty || !(cov.ymin <= cy && cy <= cov.ymax) || !cov.covers(cx, cy)) continue;
-      const DepthPlane dp = &depth_source == &frame
-                                ? fit_depth_plane(cov, p)
-                                : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), p);
-      surface = std::max(surface, dp.at(cx, cy));
+      surface = std::max(surface, depth_plane[pi].at(cx, cy));
     }
     light_visible[li] = 1.0 / frame.light_points[li].zs >= surface;
   }
@@ -220,11 +229,9 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
     for (std::uint32_t b = poly_bins.first[std::size_t(strip)]; b < poly_bins.first[std::size_t(strip) + 1]; ++b) {
       const std::size_t pi = poly_bins.items[b];
       const ScreenPolygon& p = frame.polygons[pi];
-      const CoverageSetup cov = setup_coverage(p, lattice);
+      const CoverageSetup& cov = coverage[pi];
       if (cov.empty) continue;
-      const DepthPlane dp = &depth_source == &frame
-                                ? fit_depth_plane(cov, p)
-                                : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), p);
+      const DepthPlane& dp = depth_plane[pi];
       double il = 0, slope = 0, xl = 0;  // intensity along the current row: il + slope*(x - xl)
       const std::int32_t id = std::int32_t(pi);
       for_each_covered_sample(

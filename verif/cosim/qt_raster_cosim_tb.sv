@@ -10,6 +10,8 @@
 // starts cycle c; after that edge the trace outputs describe cycle c (the design's registers are
 // those at the start of cycle c, its inputs the stimulus of cycle c), exactly what qt_raster's
 // own ports show in cycle c when driven directly.
+`include "qt_records.svh"
+
 module qt_raster_cosim_tb #(
   parameter int N_LOG2 = 9,
   parameter int TREE_LEVELS = 1,
@@ -19,8 +21,8 @@ module qt_raster_cosim_tb #(
   localparam int AW = 22,
   localparam int PW = 53,
   localparam int GW = 38,
-  localparam int WIN_W = 24 + NE * EW + NP * PW + 45 + 2 * NE * AW + 2 * NP * GW + 10,
-  localparam int PIX_W = WIN_W + 16,
+  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW),
   localparam int PIPE_LEVELS = N_LOG2 - TREE_LEVELS,
   localparam int NPE = PIPE_LEVELS + ((1 << (2 * TREE_LEVELS)) - 1) / 3,
   localparam int NPIX = 1 << (2 * (TREE_LEVELS - 1)),

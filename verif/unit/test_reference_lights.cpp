@@ -62,8 +62,9 @@ TEST(ReferenceLights, GroundLightAtGrazingAngleIsTestedAtItsCentreNotTheNearestS
     f.polygons = {ground()};
     for (bool in_front : {true, false}) {
       const double w_light = ground_w(ys) * (in_front ? 1 + 1e-5 : 1 - 1e-5);
-      if (in_front == (row > 1000.5))  // the two cases the nearest sample gets wrong
+      if (in_front == (row > 1000.5)) {  // the two cases the nearest sample gets wrong
         ASSERT_EQ(w_light < w_nearest, in_front) << "row " << row << ": the nearest sample would decide otherwise";
+      }
       f.light_points = {red_light(xs, ys, 1.0 / w_light, 1)};
       ReferenceStats stats;
       const RasterImage r = render_reference(f, stats, Visibility::kDepth);
