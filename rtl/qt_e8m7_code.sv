@@ -1,5 +1,5 @@
 // The e8m7 code of 1/Z = v * 2^(w_exponent - G) (hls/quadtree/quadtree_arith.hpp
-// QuadFixedArith::inverse_depth_code -> hls/segment/zfloat_ops.hpp zfloat_from_aligned with
+// QuadFixedArith::inverse_depth_code -> hls/types/zfloat_ops.hpp zfloat_from_aligned with
 // e = w_exponent - G + 127 + 7 + kZGuardBits, kZGuardBits = 12), bit for bit:
 //   s = min(v, 2^41 - 1), kept as a 42-bit two's complement number (the kernel's Int<42>(s),
 //     which wraps: a v below -2^41 keeps only its low 42 bits);

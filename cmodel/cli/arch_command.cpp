@@ -123,13 +123,13 @@ int ArchCommand::run() {
   if (raster != 0) {
     int k = 0;
     while (k <= 10 && (1 << k) != raster) ++k;
-    if (k > 10 || k < hls::kQuadMinRasterLog2) throw InputError("", "--raster", "must be a power of two from 16 to 1024, not " + std::to_string(raster));
+    if (k > 10 || k < hls::kMinRasterLog2) throw InputError("", "--raster", "must be a power of two from 16 to 1024, not " + std::to_string(raster));
     if (sub->count("--n") > 0 && k != raster_log2)
       throw InputError("", "--raster", std::to_string(raster) + " lines is n = " + std::to_string(k) + ", but --n is " + std::to_string(raster_log2));
     raster_log2 = k;
   }
   auto check_n = [](int n, const char* option) {
-    if (n < hls::kQuadMinRasterLog2 || n > hls::kQuadMaxRasterLog2)
+    if (n < hls::kMinRasterLog2 || n > hls::kMaxRasterLog2)
       throw InputError("", option, "the raster must have 16 to 1024 lines (n = 4..10), not n = " + std::to_string(n));
   };
   check_n(raster_log2, "--n");

@@ -10,6 +10,7 @@
 
 #include "common/error.hpp"
 #include "engine/engine.hpp"
+#include "registry/engine_registry.hpp"
 #include <cctype>
 
 namespace cig::cli {

@@ -14,6 +14,7 @@
 #include "cli/cli_common.hpp"
 #include "cli/frame_jobs.hpp"
 #include "image/image_compare.hpp"
+#include "registry/engine_registry.hpp"
 
 namespace cig::cli {
 

@@ -4,6 +4,8 @@
 //   cig polys SCENE --frame K --channel C --out FILE.json
 // All commands take --engine NAME [--engine-opt KEY=VALUE ...] [--snap]. Input errors print
 // "cig: error: FILE: PLACE: RULE" and exit with status 2 before any output file is written.
+#include <unistd.h>
+
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -13,13 +15,12 @@
 
 #include "cli/arch_command.hpp"
 #include "cli/cli_common.hpp"
-#ifdef CIG_WITH_RTL
-#include "cli/cosim_command.hpp"
-#endif
+#include "cli/cli_main.hpp"
 #include "cli/sweep_command.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
+#include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig {
@@ -27,7 +28,24 @@ namespace {
 
 using namespace cli;
 
+// `cig cosim ...` runs the co-simulation executable cig-cosim from cig's own folder (built with the
+// RTL, -DCIG_WITH_RTL=ON): the product binary links no Verilated model. Returns only on failure.
+int forward_to_cosim(int argc, char** argv) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path cosim = (ec ? std::filesystem::path(argv[0]) : self).parent_path() / "cig-cosim";
+  if (!std::filesystem::exists(cosim))
+    throw InputError("", "cosim", "this cig has no co-simulation: " + cosim.string() +
+                                      " is missing (build with -DCIG_WITH_RTL=ON, which needs Verilator)");
+  std::vector<char*> args{const_cast<char*>(cosim.c_str())};
+  for (int k = 2; k < argc; ++k) args.push_back(argv[k]);
+  args.push_back(nullptr);
+  ::execv(cosim.c_str(), args.data());
+  throw std::runtime_error("cannot run " + cosim.string());
+}
+
 int run(int argc, char** argv) {
+  if (argc >= 2 && std::string(argv[1]) == "cosim") return forward_to_cosim(argc, argv);
   CLI::App app{"cig: computer image generator C model (float reference, bit-accurate engines)"};
   app.require_subcommand(1);
 
@@ -72,21 +90,13 @@ int run(int argc, char** argv) {
   sweep.add_to(app);
   ArchCommand arch;
   arch.add_to(app);
-#ifdef CIG_WITH_RTL
-  CosimCommand cosim;
-  cosim.add_to(app);
-#endif
+  // Listed for --help; `cig cosim ...` never reaches the parser (forward_to_cosim).
+  app.add_subcommand("cosim", "co-simulate the quadtree RTL against the kernels and the architecture model (runs cig-cosim; "
+                              "`cig cosim --help` for its options)")
+      ->allow_extras();
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    // Option errors are input errors like any other: one line, status 2.
-    throw InputError("", "", e.what());
-  }
+  int status = 0;
+  if (!parse_command_line(app, argc, argv, status)) return status;
 
   if (*render) {
     // Everything that can be wrong with the input is checked before anything is written.
@@ -197,9 +207,6 @@ int run(int argc, char** argv) {
   if (*compare.sub) return compare.run();
   if (*sweep.sub) return sweep.run();
   if (*arch.sub) return arch.run();
-#ifdef CIG_WITH_RTL
-  if (*cosim.sub) return cosim.run();
-#endif
 
   if (*polys) {
     Scene scene = load_scene(polys_scene);
@@ -223,13 +230,5 @@ int run(int argc, char** argv) {
 }  // namespace cig
 
 int main(int argc, char** argv) {
-  try {
-    return cig::run(argc, argv);
-  } catch (const cig::InputError& e) {
-    std::cerr << "cig: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "cig: internal error: " << e.what() << "\n";
-    return 1;
-  }
+  return cig::cli::guarded_main("cig", [&] { return cig::run(argc, argv); });
 }

@@ -20,6 +20,7 @@
 #include "cli/frame_jobs.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
+#include "registry/engine_registry.hpp"
 
 namespace cig::cli {
 

@@ -1,17 +1,17 @@
 // Raster engines behind one interface, so that the CLI and the verification harness drive any of
-// them the same way: "float" (the reference), later "segment" (formatter + segment processor),
-// "quadtree" (recursive subdivision) and "invparam" (inverse-parameter systolic array).
+// them the same way: "float" (the reference, cmodel/reference), "segment" and "segment-double"
+// (formatter + segment processor, cmodel/segment), "quadtree" and "quadtree-double" (recursive
+// subdivision, cmodel/quadtree). Each consumes a ScreenFrame and produces a RasterImage (image and
+// per-pixel ids, image/raster_image.hpp) and a report.
 #pragma once
 
 #include <map>
-#include <memory>
 #include <string>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "frame/screen_frame.hpp"
-#include "reference/reference_raster.hpp"
+#include "image/raster_image.hpp"
 
 namespace cig {
 
@@ -33,9 +33,5 @@ class RasterEngine {
   // Checks the engine's options against a raster size before any work (InputError).
   virtual void check_raster(int /*raster*/) const {}
 };
-
-// Throws InputError (naming the option) for an unknown engine or an option it does not accept.
-std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options);
-std::vector<std::string> engine_names();
 
 }  // namespace cig

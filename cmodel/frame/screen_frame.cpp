@@ -10,28 +10,6 @@
 
 namespace cig {
 
-double snap_grid_coordinate(double s) {
-  double g = std::round(grid_x(s));
-  g = std::min(std::max(g, 0.0), double(kGridMax));
-  return (g - kGridOffset) / kGridScale;
-}
-
-ScreenFrame snap_to_formatter_grid(const ScreenFrame& f) {
-  ScreenFrame s = f;
-  for (auto& p : s.polygons)
-    for (auto& v : p.vertices) {
-      v.xs = snap_grid_coordinate(v.xs);
-      v.ys = snap_grid_coordinate(v.ys);
-    }
-  for (auto& l : s.light_points) {
-    l.xs = snap_grid_coordinate(l.xs);
-    l.ys = snap_grid_coordinate(l.ys);
-    double d = std::min(std::round(kGridScale * l.ds), kMaxLightDiameterUnits);
-    l.ds = d / kGridScale;
-  }
-  return s;
-}
-
 ScreenFrame parse_polygon_list(const std::string& text, const std::string& file) {
   nlohmann::json doc = parse_json_text(text, file);
   JsonNode root(doc, file, "");

@@ -51,20 +51,6 @@ struct ScreenFrame {
   std::vector<ScreenLightPoint> light_points;
 };
 
-// Formatter grid (SPEC C, eq. 1): X = 2048*Xs + 2047, Y = 2048*Ys + 2047, 4096 units per screen.
-constexpr double kGridScale = 2048.0;
-constexpr double kGridOffset = 2047.0;
-constexpr int kGridMax = 4095;
-inline double grid_x(double xs) { return kGridScale * xs + kGridOffset; }
-// Light-point diameter in grid units, D = 2048*Ds clamped to 0..7 (eq. 1).
-constexpr double kMaxLightDiameterUnits = 7.0;
-
-// Snaps positions to the formatter grid (round half away from zero, clamp 0..4095) and light
-// diameters to whole units 0..7, leaving everything else as it is: the float reference on a
-// snapped frame sees exactly the positions a fixed-point engine sees.
-ScreenFrame snap_to_formatter_grid(const ScreenFrame& f);
-double snap_grid_coordinate(double s);  // Xs or Ys -> snapped Xs or Ys
-
 ScreenFrame load_polygon_list(const std::string& file);
 ScreenFrame parse_polygon_list(const std::string& text, const std::string& file);
 std::string polygon_list_json(const ScreenFrame& f);  // "cig-polys" text

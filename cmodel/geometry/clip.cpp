@@ -2,16 +2,6 @@
 
 namespace cig {
 
-ViewPyramid::ViewPyramid(double t, double near)
-    : plane{{0, 0, 1, -near}, {1, 0, t, 0}, {-1, 0, t, 0}, {0, -1, t, 0}, {0, 1, t, 0}} {}
-
-std::uint8_t ViewPyramid::outcode(const glm::dvec3& e) const {
-  std::uint8_t c = 0;
-  for (int k = 0; k < kClipPlanes; ++k)
-    if (plane[k].distance(e) < 0) c |= std::uint8_t(1u << k);
-  return c;
-}
-
 bool clip_polygon(ClipPolygon& p, const ClipPlane& plane) {
   ClipPolygon out;
   for (int i = 0; i < p.n; ++i) {

@@ -1,11 +1,13 @@
 // Clipping of convex polygons against the viewing pyramid in eye coordinates (SPEC B):
-// the near plane z >= near and the four sides |x| <= t*z, |y| <= t*z.
+// the near plane z >= near and the four sides |x| <= t*z, |y| <= t*z (ViewPyramid,
+// manager/channel_view.hpp).
 #pragma once
 
 #include <cstdint>
 
 #include <glm/vec3.hpp>
 
+#include "manager/channel_view.hpp"  // the viewing pyramid (stage A's view of a channel)
 #include "scene/scene.hpp"
 
 namespace cig {
@@ -19,21 +21,6 @@ struct ClipVertex {
 struct ClipPolygon {
   ClipVertex v[kMaxScreenVertices];
   int n = 0;
-};
-
-// Half-space a*x + b*y + c*z + d >= 0 in eye coordinates.
-struct ClipPlane {
-  double a, b, c, d;
-  double distance(const glm::dvec3& e) const { return a * e.x + b * e.y + c * e.z + d; }
-  ClipPlane complement() const { return {-a, -b, -c, -d}; }
-};
-
-// The five planes of the viewing pyramid, in clipping order: near, left, right, top, bottom.
-// Bit k of an outcode refers to plane k.
-struct ViewPyramid {
-  ClipPlane plane[kClipPlanes];
-  ViewPyramid(double tan_half_fov, double near);
-  std::uint8_t outcode(const glm::dvec3& e) const;  // planes the point lies outside of
 };
 
 // Clips `p` in place against one plane. The intersection on an edge is computed from its inside

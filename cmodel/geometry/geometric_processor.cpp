@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/clip.hpp"
+#include "hls/formatter/sample_lattice.hpp"  // the scene sizes light points in formatter grid units
 
 namespace cig {
 
@@ -33,7 +34,7 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
 
   std::vector<glm::dvec3> eye;
   std::vector<std::uint8_t> code;
-  const double min_ds = scene.light_rendering.min_diameter_units / kGridScale;
+  const double min_ds = std::ldexp(scene.light_rendering.min_diameter_units, -hls::kGridScaleLog2);  // Ds = D / 2048
   for (const PriorityEntry& entry : list.objects) {
     const Object& object = scene.objects[entry.object];
     const WorldObject& wobject = db.objects[entry.object];

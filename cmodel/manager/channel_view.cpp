@@ -26,4 +26,14 @@ ChannelView make_channel_view(const Scene& scene, int frame, int channel) {
   return v;
 }
 
+ViewPyramid::ViewPyramid(double t, double near)
+    : plane{{0, 0, 1, -near}, {1, 0, t, 0}, {-1, 0, t, 0}, {0, -1, t, 0}, {0, 1, t, 0}} {}
+
+std::uint8_t ViewPyramid::outcode(const glm::dvec3& e) const {
+  std::uint8_t c = 0;
+  for (int k = 0; k < kClipPlanes; ++k)
+    if (plane[k].distance(e) < 0) c |= std::uint8_t(1u << k);
+  return c;
+}
+
 }  // namespace cig

@@ -2,6 +2,8 @@
 // offsets and field of view (SPEC A.1: the rotation matrix B).
 #pragma once
 
+#include <cstdint>
+
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
@@ -22,5 +24,21 @@ struct ChannelView {
 };
 
 ChannelView make_channel_view(const Scene& scene, int frame, int channel);
+
+// Half-space a*x + b*y + c*z + d >= 0 in eye coordinates.
+struct ClipPlane {
+  double a, b, c, d;
+  double distance(const glm::dvec3& e) const { return a * e.x + b * e.y + c * e.z + d; }
+  ClipPlane complement() const { return {-a, -b, -c, -d}; }
+};
+
+// The five planes of the viewing pyramid, in clipping order: near, left, right, top, bottom.
+// Bit k of an outcode refers to plane k. The scene manager culls bounding spheres against it
+// (stage A), the geometric processor clips polygons against it (stage B).
+struct ViewPyramid {
+  ClipPlane plane[kClipPlanes];
+  ViewPyramid(double tan_half_fov, double near);
+  std::uint8_t outcode(const glm::dvec3& e) const;  // planes the point lies outside of
+};
 
 }  // namespace cig

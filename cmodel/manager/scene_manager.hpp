@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/clip.hpp"
 #include "manager/channel_view.hpp"
 #include "scene/world_database.hpp"
 

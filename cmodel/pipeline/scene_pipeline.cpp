@@ -8,6 +8,7 @@
 
 #include "geometry/geometric_processor.hpp"
 #include "manager/scene_manager.hpp"
+#include "registry/engine_registry.hpp"
 
 namespace cig {
 

@@ -94,7 +94,7 @@ double TestRect::shape_factor(double alpha, double beta) const {
 }
 
 TestRect make_test_rect(int raster_log2, double area, double aspect, int rotation_deg, const std::string& option) {
-  if (raster_log2 < hls::kQuadMinRasterLog2 || raster_log2 > hls::kQuadMaxRasterLog2)
+  if (raster_log2 < hls::kMinRasterLog2 || raster_log2 > hls::kMaxRasterLog2)
     throw InputError("", "--n", "the raster must have 16 to 1024 lines (n = 4..10), not n = " + std::to_string(raster_log2));
   if (!(area > 0) || !std::isfinite(area)) throw InputError("", option, "an area must be a positive number of pixels");
   if (!(aspect >= 1) || !std::isfinite(aspect)) throw InputError("", "--aspects", "an aspect ratio must be a number >= 1");

@@ -32,8 +32,8 @@
 #include <utility>
 #include <vector>
 
+#include "hls/formatter/records.hpp"
 #include "hls/quadtree/records.hpp"
-#include "hls/segment/records.hpp"
 #include "quadtree/arch_model.hpp"
 #include "quadtree/architecture.hpp"
 

@@ -3,7 +3,7 @@
 // same algorithm with no quantization of the planes, the parameter values, the fog or the colour.
 // Coverage stays the kernels' exact integer arithmetic on the formatter's grid (there is nothing
 // to quantize in it); the twin reads the unquantized vertex values (256 Is, Zs) of the formatter
-// twin (cmodel/segment/formatter_twin.hpp), so it also shows what the formatter's 8-bit I and e8m7
+// twin (cmodel/formatter/formatter_twin.hpp), so it also shows what the formatter's 8-bit I and e8m7
 // Z cost. Value units as in the fixed policy, except W: the twin's W is 1/Z itself (w_exponent 0).
 #pragma once
 

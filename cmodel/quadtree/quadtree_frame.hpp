@@ -15,16 +15,15 @@
 #include <type_traits>
 #include <vector>
 
+#include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
 #include "hls/formatter/formatter.hpp"
+#include "hls/pixel/light_coding.hpp"
 #include "hls/quadtree/pixel_processor.hpp"
 #include "hls/quadtree/setup.hpp"
-#include "hls/segment/light_segments.hpp"
-#include "image/image.hpp"
+#include "image/raster_image.hpp"
 #include "quadtree/arch_model.hpp"
 #include "quadtree/quadtree_double_arith.hpp"
-#include "reference/reference_raster.hpp"
-#include "segment/formatter_twin.hpp"
 
 namespace cig::quad {
 
@@ -177,31 +176,31 @@ class PixelFrame final : public PixelSink<P> {
     }
   }
 
-  // The light point unit: every light's samples (the segment processor's coding table and column
-  // rule: the float reference's disc, verif/kernels/test_segment_arith.cpp) into per-pixel covers;
-  // a sample keeps the light with the earliest priority position (ties: the earlier light).
+  // The light point unit: every light's samples (the coding table's chords, hls/pixel/light_coding.hpp:
+  // the float reference's disc, verif/kernels/test_segment_arith.cpp) into per-pixel covers; a
+  // sample keeps the light with the earliest priority position (ties: the earlier light).
   long rasterise_lights(const ScreenFrame& frame) {
-    using SegP = hls::DefaultSegmentArith;
-    const hls::RowGeometry g = hls::RowGeometry::for_raster(log2_);
+    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2_);
     std::vector<std::size_t> order(frame.light_points.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return frame.light_points[a].priority < frame.light_points[b].priority;
     });
     long samples = 0;
-    hls::Segment<SegP> segs[hls::kMaxLightSegments];
+    hls::LightChord chords[hls::kMaxLightRows];
     for (std::size_t li : order) {
       const ScreenLightPoint& l = frame.light_points[li];
       hls::FormattedPrimitive f;
       hls::formatter_top(raw_from_light(l, std::uint16_t(li)), f);
       typename P::Sample colour[3];
       light_colour(l, f, colour);
-      const int k = hls::generate_light_segments<SegP>(f, log2_, hls::UInt<3>(0), segs);
+      const int k = hls::light_chords(f, log2_, chords);
       for (int s = 0; s < k; ++s) {
-        const int r = int(segs[s].row_first.value());
-        const int row = 4 * int(segs[s].line.value()) + r;
-        const int i0 = std::max(0, SegP::first_column_at_or_after(g, segs[s].xl[r]));
-        const int i1 = std::min(4 * n_ - 1, SegP::first_column_at_or_after(g, segs[s].xr[r]) - 1);
+        const int row = chords[s].row;
+        int i0 = 0, i1 = 0;
+        hls::light_chord_columns(chords[s], g, i0, i1);
+        i0 = std::max(0, i0);
+        i1 = std::min(4 * n_ - 1, i1);
         for (int i = i0; i <= i1; ++i) {
           const std::size_t pix = std::size_t(row / 4) * std::size_t(n_) + std::size_t(i / 4);
           if (cover_index_[pix] < 0) {

@@ -19,7 +19,7 @@
 #include <cstdint>
 
 #include "frame/screen_frame.hpp"
-#include "image/image.hpp"
+#include "image/raster_image.hpp"
 
 namespace cig {
 
@@ -29,11 +29,6 @@ struct ReferenceStats {
   std::uint64_t samples_written = 0;   // samples that passed the depth test when drawn
   std::uint64_t light_points = 0, light_samples = 0;
   double raster_ms = 0, resolve_ms = 0;
-};
-
-struct RasterImage {
-  Image image;
-  IdBuffer ids;
 };
 
 // Visibility: kDepth is the ground truth (the z-buffer above). kPriority lets the first polygon in
@@ -46,10 +41,6 @@ struct RasterImage {
 enum class Visibility { kDepth, kPriority };
 
 RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility = Visibility::kDepth);
-
-// The id of a pixel from its samples' owners (polygon index, -1 none): the polygon owning most
-// samples; ties go to the earlier polygon, the background loses ties. Sorts `ids`.
-std::int32_t majority_owner(std::int32_t* ids, int count);
 
 // The snapped reference: coverage (and Gouraud) from the vertices snapped to the formatter grid,
 // depth from the exact vertices of `exact` (the same polygons unsnapped). Snapping X and Y while

@@ -1,28 +1,29 @@
-// Sample positions of the float reference on the formatter's 4096 x 4096 grid (SPEC C).
+// Sample positions of the float reference, in double: the formatter's sample lattice
+// (hls/formatter/sample_lattice.hpp, SPEC C), where every constant is defined.
 //
 // The formatter maps Xs in [-1, 1] to X = 2048*Xs + 2047, so the screen spans X in [-1, 4095].
-// A raster of N pixels gives each pixel u = 4096/N grid units; pixel p spans
-// [u*p - 1, u*p - 1 + u). Each pixel holds kSamplesPerSide x kSamplesPerSide = 4 x 4 samples on a
-// regular grid, sample s at u*p - 1 + (2s + 1)*u/8 (stratified, centred in its cell). At N = 512
-// (u = 8) the samples lie on the even grid units 8p, 8p+2, 8p+4, 8p+6: integers, so on snapped
-// vertices every edge test is exact.
+// A raster of N pixels gives each pixel u = 4096/N grid units; pixel p spans [u*p - 1, u*p - 1 + u).
+// Each pixel holds 4 x 4 samples, sample s at u*p - 1 + (2s + 1)*u/8 (stratified, centred in its
+// cell). At N = 512 (u = 8) the samples lie on the even grid units 8p, 8p+2, 8p+4, 8p+6: integers,
+// so on snapped vertices every edge test is exact.
 //
 // All coverage work happens in *sample coordinates*: sample (i, j) of the whole raster sits at
 // (i, j), i, j in [0, 4N). The map from grid units is x = (X + 1 - u/8) * 4/u, a power-of-two
 // scale and a dyadic offset, hence exact in double for snapped vertices.
 #pragma once
 
-#include "frame/screen_frame.hpp"
+#include "formatter/formatter_twin.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 
 namespace cig {
 
-constexpr int kSamplesPerSide = 4;
-constexpr int kSamplesPerPixel = kSamplesPerSide * kSamplesPerSide;
+constexpr int kSamplesPerSide = hls::kSamplesPerSide;
+constexpr int kSamplesPerPixel = hls::kSamplesPerPixel;
 
 struct SampleLattice {
   int raster = 512;                 // N
   int size() const { return raster * kSamplesPerSide; }  // samples per row and per column
-  double units_per_pixel() const { return 4096.0 / raster; }
+  double units_per_pixel() const { return double(hls::kGridUnits) / raster; }
   // Grid units -> sample coordinates.
   double from_grid(double g) const {
     const double u = units_per_pixel();

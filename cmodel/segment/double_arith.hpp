@@ -13,7 +13,7 @@
 namespace cig {
 
 struct DoubleSegmentArith {
-  using RowGeometry = hls::RowGeometry;
+  using LatticeGeometry = hls::LatticeGeometry;
   using Coord = double;
   using Diameter = double;
   using Level = double;
@@ -28,9 +28,9 @@ struct DoubleSegmentArith {
     double start = 1e30, end = 2e30;
   };
 
-  static double row_y(const RowGeometry& g, int k) { return 0.5 * g.row_half(k); }
-  static double spacing(const RowGeometry& g) { return std::ldexp(1.0, g.log2_half_spacing - 1); }
-  static int first_row_at_or_after(const RowGeometry& g, double y) {
+  static double row_y(const LatticeGeometry& g, int k) { return 0.5 * g.sample_half(k); }
+  static double spacing(const LatticeGeometry& g) { return std::ldexp(1.0, g.log2_half_spacing - 1); }
+  static int first_row_at_or_after(const LatticeGeometry& g, double y) {
     return int(std::ceil((2 * y - g.offset_half) / std::ldexp(1.0, g.log2_half_spacing)));
   }
   static double area_term(double x0, double y0, double x1, double y1) { return (y1 - y0) * (x1 + x0); }
@@ -43,10 +43,10 @@ struct DoubleSegmentArith {
     const int msb = int(std::floor(std::log2(m)));
     return std::clamp(21 - msb, 1, 15);
   }
-  static double slope_per_row(const RowGeometry& g, double xa, double ya, double xb, double yb) {
+  static double slope_per_row(const LatticeGeometry& g, double xa, double ya, double xb, double yb) {
     return (xb - xa) / (yb - ya) * spacing(g);
   }
-  static double crossing(const RowGeometry& g, double xa, double ya, double xb, double yb, int k) {
+  static double crossing(const LatticeGeometry& g, double xa, double ya, double xb, double yb, int k) {
     return xa + (row_y(g, k) - ya) * (xb - xa) / (yb - ya);
   }
   static double step(double x, double s, int rows) { return x + rows * s; }
@@ -59,7 +59,7 @@ struct DoubleSegmentArith {
   static double depth_at(double zb, double ze, double yb, double ye, int yt_quarter) {
     return std::max(1e-30, zb + (ze - zb) * along_edge(yb, ye, yt_quarter) / (ye - yb));
   }
-  static double column_x(const RowGeometry& g, int i) { return 0.5 * g.row_half(i); }
+  static double column_x(const LatticeGeometry& g, int i) { return 0.5 * g.sample_half(i); }
   static double midpoint(double a, double b) { return 0.5 * (a + b); }
   using Reciprocal = double;
   using Ratio = double;
@@ -76,7 +76,7 @@ struct DoubleSegmentArith {
     for (double v : s) sum += v;
     return hls::UInt<8>(int(std::lround(std::clamp(sum / 16.0, 0.0, 255.0))));
   }
-  static int first_column_at_or_after(const RowGeometry& g, double x) {
+  static int first_column_at_or_after(const LatticeGeometry& g, double x) {
     return int(std::ceil((2 * x - g.offset_half) / std::ldexp(1.0, g.log2_half_spacing)));
   }
 };

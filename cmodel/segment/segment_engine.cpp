@@ -15,7 +15,7 @@
 #include "hls/segment/segment_generator.hpp"
 #include "hls/segment/video_channel.hpp"
 #include "segment/double_arith.hpp"
-#include "segment/formatter_twin.hpp"
+#include "formatter/formatter_twin.hpp"
 
 namespace cig {
 
@@ -80,12 +80,12 @@ struct Front<DoubleSegmentArith> {
   static hls::FormattedPrimitiveT<P> light(const ScreenLightPoint& l, std::uint16_t id) { return convert(formatter_twin(l, id)); }
   // The twin of the coding table: the exact chord of the disc of diameter D at each row.
   static int light_segments(const hls::FormattedPrimitiveT<P>& l, int log2, hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
-    const hls::RowGeometry g = hls::RowGeometry::for_raster(log2);
+    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2);
     const int rows = hls::kRowsPerLine << log2;
     const double cx = l.v[0].x, cy = l.v[0].y, d = l.d;  // half units: radius D/2 grid = D half
     int count = 0;
     for (int row = std::max(0, P::first_row_at_or_after(g, cy - 0.5 * d)); row < rows && count < hls::kMaxLightSegments; ++row) {
-      const double dy = g.row_half(row) - 2 * cy;
+      const double dy = g.sample_half(row) - 2 * cy;
       if (std::abs(dy) > d) break;
       const double w = std::sqrt(d * d - dy * dy);
       hls::Segment<P>& s = out[count++];

@@ -1,5 +1,7 @@
-// The formatter of the segment processor (SPEC C, seed 001 eq. 1): the geometric processor's
-// binary64 screen values to the fixed-point words of the segment memory.
+// The formatter (SPEC C, seed 001 eq. 1): the geometric processor's binary64 screen values to the
+// fixed-point words every raster engine reads (the segment processor's frame memory, the quadtree
+// raster processor's setup). Its records are in records.hpp, its grid and sample lattice in
+// sample_lattice.hpp.
 //
 //   X = 2048*Xs + 2047  -> UInt<12>, 0..4095      Y likewise
 //   I = 256*Is          -> UInt<8>,  0..255
@@ -34,7 +36,7 @@
 //   -0      is zero (X = Y = 2047, Z code 0).
 #pragma once
 
-#include "hls/segment/records.hpp"
+#include "hls/formatter/records.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 

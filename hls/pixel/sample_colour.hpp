@@ -14,6 +14,7 @@
 
 // hls-subset-helper: the colour arithmetic shared by the video channel and the pixel processor.
 
+#include "hls/formatter/sample_lattice.hpp"
 #include "hls/types/fixed.hpp"
 #include "hls/types/zfloat.hpp"
 
@@ -24,7 +25,6 @@ using SampleColour = UFixed<16, 8, Quant::kRound, Overflow::kSat>;
 using FogFactor = UFixed<9, 1, Quant::kRound, Overflow::kSat>;
 
 constexpr int kFogTableSize = 1 << 15;
-constexpr int kSamplesPerPixel = 16;
 
 struct FogTable {
   FogFactor f[kFogTableSize];

@@ -17,7 +17,7 @@
 
 #include "hls/pixel/sample_colour.hpp"
 #include "hls/quadtree/records.hpp"
-#include "hls/segment/zfloat_ops.hpp"
+#include "hls/types/zfloat_ops.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 

@@ -12,9 +12,9 @@
 //                             resolve; box filter
 //
 // Geometry. The raster has N = 2^n pixels a side (16 <= N <= 1024) and 4 x 4 samples per pixel
-// at the float reference's positions (cmodel/reference/sample_lattice.hpp), so the sample lattice
-// is 4N x 4N; sample (i, j) lies at half-unit position (s i + o, s j + o), with half units = 2 x
-// formatter grid units, s = 2^(11 - n) and o = 2^(10 - n) - 2 (hls/segment's RowGeometry).
+// on the formatter's sample lattice (hls/formatter/sample_lattice.hpp), so the lattice is 4N x 4N;
+// sample (i, j) lies at half-unit position (s i + o, s j + o), with half units = 2 x formatter grid
+// units, s = 2^(11 - n) and o = 2^(10 - n) - 2 (LatticeGeometry).
 // Level l (0..n) of the subdivision splits the screen into 2^l x 2^l windows of 2^(n - l) pixels,
 // i.e. 2^(n - l + 2) samples a side; window (x, y) of level l has its top-left sample at
 // (x, y) * 2^(n - l + 2). Level n windows are pixels. Children are numbered q = 2 y_bit + x_bit
@@ -26,15 +26,12 @@
 // 2^(n-l) - 1 + alpha with alpha = beta = 3/4.
 #pragma once
 
+#include "hls/formatter/records.hpp"
 #include "hls/pixel/sample_colour.hpp"
-#include "hls/types/fixed.hpp"
-#include "hls/types/zfloat.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
-constexpr int kQuadMinRasterLog2 = 4;   // N >= 16
-constexpr int kQuadMaxRasterLog2 = 10;  // N <= 1024
-constexpr int kQuadMaxLevels = kQuadMaxRasterLog2;
+constexpr int kQuadMaxLevels = kMaxRasterLog2;  // levels 0..n, n = log2 N <= 10 (sample_lattice.hpp)
 // Edge lines per polygon record: a PE evaluates this many edge functions in parallel. Polygons
 // with more vertices are split by the setup into a fan of pieces (their shared diagonals are
 // watertight under the tie rule, so the union covers exactly the polygon's samples); bounding-box

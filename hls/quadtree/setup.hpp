@@ -31,8 +31,8 @@
 // 0 (8 + 7 + 3 more vertices), sharing diagonals: exact and watertight by the tie rule.
 #pragma once
 
+#include "hls/formatter/records.hpp"
 #include "hls/quadtree/quadtree_arith.hpp"
-#include "hls/segment/records.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -74,7 +74,7 @@ inline int floor_shift(int t, int ls) { return t >> ls; }
 
 // d_0: the edge function at the screen corner sample that maximises it.
 inline EdgeValue root_coverage(const EdgeGradient& a, const EdgeGradient& b, const Int<29>& c, int raster_log2) {
-  const std::int64_t span = (std::int64_t{4} << raster_log2) - 1;  // 4N - 1 sample steps
+  const std::int64_t span = (std::int64_t{kSamplesPerSide} << raster_log2) - 1;  // 4N - 1 sample steps
   const std::int64_t ap = a.value() > 0 ? a.value() : 0, bp = b.value() > 0 ? b.value() : 0;
   return EdgeValue(c.value() + span * (ap + bp));
 }
@@ -84,8 +84,9 @@ template <class P>
 void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices],
                  const int (&idx)[kQuadMaxEdges], int m, int raster_log2, int e_min, QuadWindow<P>& root,
                  UInt<3>& bbox_added, bool& ok) {
-  const int ls = 11 - raster_log2;              // log2 s
-  const int o = (1 << (10 - raster_log2)) - 2;  // half-unit offset of sample 0
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  const int ls = g.log2_half_spacing;  // log2 s
+  const int o = g.offset_half;         // half-unit position of sample 0
   // Twice the signed area (Newell's nz; eq. 5-6 of seed 001 has the same sum).
   Int<34> nz(0);
   for (int k = 0; k < kQuadMaxEdges; ++k) {

@@ -18,7 +18,7 @@ namespace detail {
 // Appends the edge a -> b (a above b) to a chain when a sample row crosses it.
 template <class P, class Q>
 void add_chain_edge(const FormattedVertexT<Q>& a, const FormattedVertexT<Q>& b,
-                                      const RowGeometry& g, int rows, Edge<P>* chain, UInt<5>& count) {
+                                      const LatticeGeometry& g, int rows, Edge<P>* chain, UInt<5>& count) {
   if (!(a.y < b.y)) return;  // horizontal
   int first = P::first_row_at_or_after(g, a.y);
   int last = P::first_row_at_or_after(g, b.y) - 1;
@@ -46,7 +46,7 @@ void add_chain_edge(const FormattedVertexT<Q>& a, const FormattedVertexT<Q>& b,
 // raster_log2 = n for an N = 2^n raster (kMinRasterLog2..kMaxRasterLog2).
 template <class P, class Q>
 void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEdges<P>& out) {
-  const RowGeometry g = RowGeometry::for_raster(raster_log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
   const int rows = kRowsPerLine << raster_log2;
   const int n = int(in.n.value());
   PolygonHeader<P>& h = out.h;

@@ -1,9 +1,8 @@
-// Records of the segment processor (SPEC C-D, seed 001): what flows between its kernels and
-// what its memories hold. Every field has its width here; the kernels use only these records and
-// the type layer.
+// Records of the segment processor (SPEC D, seed 001): what flows between its kernels and what
+// its memories hold. Every field has its width here; the kernels use only these records, the
+// formatter's (hls/formatter/records.hpp) and the type layer.
 //
-//   ScreenFrame (double) --cmodel--> RawPrimitive (IEEE binary64 bit patterns)
-//     formatter_top        -> FormattedPrimitive   (eq. 1: X, Y 12 bits, I 8, D 3, Z e8m7)
+//   FormattedPrimitive (hls/formatter: eq. 1, X, Y 12 bits, I 8, D 3, Z e8m7)
 //     edge_generator_top   -> PolygonEdges         (left/right chains, slopes eq. 2, area eq. 5-6,
 //                                                   area code, segment counts per field)
 //     frame memory (2 banks x 16K words; headers and edges)     overload threshold (eq. 6 codes)
@@ -15,76 +14,17 @@
 //     video_channel_top    -> pixels of one line (I and Z along the segment, colour x I, fog by
 //                             Z, priority, 4 x 4 sub-pixel coverage)
 //
-// Geometry conventions (the same as the float reference, cmodel/reference/sample_lattice.hpp):
-// grid units X, Y in 0..4095; raster N = 2^n lines of u = 4096/N units; line L spans
-// [u*L - 1, u*L - 1 + u); its 4 sample rows r = 0..3 lie at Y = u*L - 1 + (2r + 1)*u/8, i.e. at
-// 8L + 2r for N = 512. Sample rows are numbered globally 0..4N-1 (row = 4L + r). Positions on
-// the sample lattice are kept in *half units* (2 * grid units), which represents every sample
-// position exactly for N <= 1024; the segment processor supports 16 <= N <= 1024.
+// Geometry: the formatter grid and the sample lattice of hls/formatter/sample_lattice.hpp (grid
+// units X, Y in 0..4095; raster line L holds the 4 sample rows 4L + r, r = 0..3; positions in half
+// units, exact for 16 <= N <= 1024).
 #pragma once
 
-#include "hls/types/fixed.hpp"
-#include "hls/types/zfloat.hpp"
+#include "hls/formatter/records.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
-constexpr int kMaxVertices = 16;        // per polygon, after clipping (cmodel kMaxScreenVertices)
-constexpr int kMaxRasterLog2 = 10;      // N <= 1024
-constexpr int kMinRasterLog2 = 4;       // N >= 16
-constexpr int kMaxLines = 1 << kMaxRasterLog2;
-constexpr int kRowsPerLine = 4;         // sample rows per raster line (4 x 4 samples per pixel)
-constexpr int kMaxRows = kMaxLines * kRowsPerLine;
+constexpr int kRowsPerLine = kSamplesPerSide;    // sample rows per raster line
 constexpr int kMaxEdgesPerChain = kMaxVertices;  // a chain can hold every edge of the polygon
-constexpr int kMaxPolygonIds = 1 << 16;          // polygons (and lights) per channel and frame
-
-// ---- Formatter input: the geometric processor's floating-point values -------------------------
-// Every real is an IEEE-754 binary64 bit pattern (the seed's processor sends 38-bit reals; binary64
-// keeps the fixed-point path equal, bit for bit, to the float reference's snapped positions).
-struct RawVertex {
-  UInt<64> xs, ys, zs, is;  // Xs, Ys in [-1, 1], Zs > 0, Is in [0, 1]
-};
-
-struct RawPrimitive {
-  bool is_light = false;
-  UInt<5> n;                    // vertices (polygon: 3..16; light: the centre is v[0])
-  RawVertex v[kMaxVertices];
-  UInt<64> ds;                  // light diameter Ds in [0, 1]
-  UInt<64> colour[3];           // R, G, B in [0, 1]
-  bool opaque = true, protect = false;
-  UInt<16> id;                  // index in the frame's polygon (or light) list
-};
-
-// ---- Formatter output (eq. 1) -----------------------------------------------------------------
-// Templated on the arithmetic policy P (segment_arith.hpp): the bit-accurate policy has
-// Coord = UInt<12> (grid units 0..4095), Level = UInt<8> (0..255), Depth = ZFloat (e8m7); the
-// C model's double twin has doubles in the same units, unrounded.
-template <class P>
-struct FormattedVertexT {
-  typename P::Coord x, y;
-  typename P::Level i;
-  typename P::Depth z;
-};
-
-template <class P>
-struct FormattedPrimitiveT {
-  bool is_light = false;
-  UInt<5> n;
-  FormattedVertexT<P> v[kMaxVertices];
-  typename P::Diameter d;          // light diameter, grid units 0..7
-  typename P::Level colour[3];     // 0..255
-  bool opaque = true, protect = false;
-  UInt<16> id;
-};
-
-// The formatter's own output types (eq. 1 widths).
-struct FormatterTypes {
-  using Coord = UInt<12>;
-  using Diameter = UInt<3>;
-  using Level = UInt<8>;
-  using Depth = ZFloat;
-};
-using FormattedVertex = FormattedVertexT<FormatterTypes>;
-using FormattedPrimitive = FormattedPrimitiveT<FormatterTypes>;
 
 // ---- Edge generator output / frame memory contents ----------------------------------------------
 // One edge of a left or right chain, as the preprocessor needs it: the sample rows it spans, its

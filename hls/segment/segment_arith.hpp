@@ -19,26 +19,9 @@
 
 #include "hls/segment/records.hpp"
 #include "hls/pixel/sample_colour.hpp"
-#include "hls/segment/zfloat_ops.hpp"
+#include "hls/types/zfloat_ops.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
-
-// Sample-row geometry (records.hpp): with u = 4096/N = 2^(12 - n), row k lies at
-// half-unit position H_k = (u/2)*k + u/4 - 2, i.e. Y_k = (H_k)/2 grid units.
-struct RowGeometry {
-  int log2_half_spacing;  // log2(u/2) = 11 - n: rows are 2^this half units apart
-  int offset_half;        // u/4 - 2
-  static RowGeometry for_raster(int raster_log2) {
-    RowGeometry g{11 - raster_log2, (1 << (10 - raster_log2)) - 2};
-    return g;
-  }
-  CIG_HLS_CONSTEXPR int row_half(int k) const { return k * (1 << log2_half_spacing) + offset_half; }
-  // Rows with Y_k >= y, i.e. H_k >= 2y: the first is ceil((2y - offset) / 2^s).
-  CIG_HLS_CONSTEXPR int first_row_at_or_after_half(int y_half) const {
-    const int t = y_half - offset_half;
-    return t <= 0 ? -((-t) >> log2_half_spacing) : ((t + (1 << log2_half_spacing) - 1) >> log2_half_spacing);
-  }
-};
 
 template <class Fmt>
 struct FixedSegmentArith {
@@ -71,13 +54,13 @@ struct FixedSegmentArith {
     return code < 1 ? 1 : code > 15 ? 15 : code;
   }
   // Ceiling and floor in half units are exact for integer grid coordinates.
-  static int first_row_at_or_after(const RowGeometry& g, const Coord& y) {
-    return g.first_row_at_or_after_half(coord_half(y));
+  static int first_row_at_or_after(const LatticeGeometry& g, const Coord& y) {
+    return g.first_sample_at_or_after_half(coord_half(y));
   }
 
   // Eq. 2 per sample row: (xb - xa) / (yb - ya) * row spacing, rounded to Slope.
   // Row spacing is 2^s half units = 2^(s-1) grid units; the quotient is taken on half units.
-  static Slope slope_per_row(const RowGeometry& g, const Coord& xa, const Coord& ya,
+  static Slope slope_per_row(const LatticeGeometry& g, const Coord& xa, const Coord& ya,
                                                const Coord& xb, const Coord& yb) {
     const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
     const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));  // half units, > 0
@@ -89,11 +72,11 @@ struct FixedSegmentArith {
   // format (the accumulator's fractional bits), not rounded to X: with X's precision its rounding
   // error (up to 1/2 LSB_X) would add to the stepping's before the final rounding into X, and an
   // exact crossing on a sample column could then round off it (see SegmentFormatFine).
-  static Slope crossing(const RowGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
+  static Slope crossing(const LatticeGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
                                           const Coord& yb, int k) {
     const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
     const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));
-    const Int<15> t2 = Int<15>(g.row_half(k) - coord_half(ya));  // row's distance below ya, half units
+    const Int<15> t2 = Int<15>(g.sample_half(k) - coord_half(ya));  // row's distance below ya, half units
     const Int<29> num = dx * t2;
     const Slope along = fixed_div<Slope>(Fixed<29, 29>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
     return Slope(Fixed<13, 13>::from_raw(Int<13>(int(xa.value()))) + along);
@@ -142,8 +125,8 @@ struct FixedSegmentArith {
   using FogTable = ::cig::hls::FogTable;
 
   // X of sample column i: 2 X_i = (u/2) i + u/4 - 2 (half units), exact with one fractional bit.
-  static X column_x(const RowGeometry& g, int i) {
-    return X(Fixed<16, 15>::from_raw(Int<16>(g.row_half(i))));
+  static X column_x(const LatticeGeometry& g, int i) {
+    return X(Fixed<16, 15>::from_raw(Int<16>(g.sample_half(i))));
   }
   static X midpoint(const X& a, const X& b) {
     const auto sum = a + b;  // one more integer bit
@@ -174,7 +157,7 @@ struct FixedSegmentArith {
 
   // The video channel's sample columns: first column i with X_i >= x, and first with X_i >= x
   // (exclusive end for a right edge), where 2 X_i = (u/2) i + u/4 - 2 (half units).
-  static int first_column_at_or_after(const RowGeometry& g, const X& x) {
+  static int first_column_at_or_after(const LatticeGeometry& g, const X& x) {
     // ceil((2x - offset) / 2^s), computed on x's raw value (F fractional bits).
     constexpr int F = X::frac_bits;
     const Int<X::width + 9> t = shl<1>(x.raw()) - (Int<X::width + 7>(g.offset_half) << F);

@@ -37,7 +37,7 @@ template <class P>
 int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channel, bool seed_quadrilateral,
                       Segment<P> (&out)[kMaxLines]) {
   if (!in.valid) return 0;
-  const RowGeometry g = RowGeometry::for_raster(raster_log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
   const PolygonHeader<P>& h = in.h;
   const int lc = int(h.left_count.value()), rc = int(h.right_count.value());
   const int line_first = h.row_first >> 2, line_last = h.row_last >> 2;
@@ -49,7 +49,7 @@ int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channe
     const int rf = h.row_first > 4 * L ? h.row_first : 4 * L;          // first covered row
     const int rl = h.row_last < 4 * L + 3 ? h.row_last : 4 * L + 3;    // last covered row
     const int rm = (rf + rl) >> 1;                                      // the row I and Z use
-    const int yt_quarter = g.row_half(rf) + g.row_half(rl);             // centre of rf..rl, quarter units
+    const int yt_quarter = g.sample_half(rf) + g.sample_half(rl);             // centre of rf..rl, quarter units
     Segment<P>& s = out[count++];
     s.line = UInt<10>(L);
     const bool top = rf == h.row_first, bottom = rl == h.row_last;

@@ -23,9 +23,9 @@ struct VideoTables {
 
 template <class P>
 struct LineBuffer {
-  typename P::Sample rgb[kRowsPerLine][kMaxRows][3];
-  bool owned[kRowsPerLine][kMaxRows];
-  int polygon[kRowsPerLine][kMaxRows];  // first polygon covering the sample, -1 none
+  typename P::Sample rgb[kRowsPerLine][kMaxLatticeSize][3];
+  bool owned[kRowsPerLine][kMaxLatticeSize];
+  int polygon[kRowsPerLine][kMaxLatticeSize];  // first polygon covering the sample, -1 none
 };
 
 struct PixelLine {
@@ -36,7 +36,7 @@ struct PixelLine {
 namespace detail {
 
 template <class P>
-void draw_segment(const Segment<P>& s, int line, const RowGeometry& g, int cols,
+void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int cols,
                                     const VideoTables<P>& t, LineBuffer<P>& w) {
   const int rf = int(s.row_first.value()), rl = int(s.row_last.value());
   const int src = int(s.source.value());
@@ -51,7 +51,7 @@ void draw_segment(const Segment<P>& s, int line, const RowGeometry& g, int cols,
     if (i0 < 0) i0 = 0;
     if (i1 > cols - 1) i1 = cols - 1;
     const int row = 4 * line + r;
-    for (int k = 0; k < kMaxRows; ++k) {
+    for (int k = 0; k < kMaxLatticeSize; ++k) {
       const int i = i0 + k;
       if (i > i1) break;
       if (!s.opaque && ((i + row) & 1) != 0) continue;  // screen door, as the float reference
@@ -76,10 +76,10 @@ void draw_segment(const Segment<P>& s, int line, const RowGeometry& g, int cols,
 template <class P, int K>
 int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t,
                                   LineBuffer<P>& w, PixelLine& out) {
-  const RowGeometry g = RowGeometry::for_raster(raster_log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
   const int n = 1 << raster_log2, cols = kRowsPerLine * n;
   for (int r = 0; r < kRowsPerLine; ++r)
-    for (int i = 0; i < kMaxRows; ++i) {
+    for (int i = 0; i < kMaxLatticeSize; ++i) {
       if (i >= cols) break;
       w.owned[r][i] = false;
       w.polygon[r][i] = -1;

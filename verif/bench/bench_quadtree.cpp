@@ -16,6 +16,7 @@
 
 #include "bench_inputs.hpp"
 #include "engine/engine.hpp"
+#include "registry/engine_registry.hpp"
 
 namespace {
 

@@ -7,25 +7,24 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.hpp"
-#include "cli/cosim_command.hpp"
 #include "cli/frame_jobs.hpp"
 #include "common/error.hpp"
 #include "cosim.hpp"
+#include "cosim_command.hpp"
 
 namespace cig::cli {
 
-void CosimCommand::add_to(CLI::App& app) {
-  sub = app.add_subcommand("cosim", "co-simulate the quadtree RTL against the kernels and the architecture model");
-  sub->add_option("input", input, "scene or polygon list")->required();
-  sub->add_option("--arch", arch, "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np");
-  frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
-  sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
-  sub->add_option("--channel", channel, "only this channel (scenes)");
-  sub->add_option("--trace", trace_file, "write the RTL's waveform (FST) of the first image");
-  sub->add_option("--stall-seed", stall_seed, "seed of the verification stall pattern (default 1)");
-  sub->add_option("--input-gaps", input_gaps, "percent of cycles the polygon port offers nothing (0..95)")->check(CLI::Range(0, 95));
-  sub->add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")->check(CLI::Range(0, 95));
-  sub->add_option("--report", report_file, "write a JSON report");
+void CosimCommand::add_options(CLI::App& app) {
+  app.add_option("input", input, "scene or polygon list")->required();
+  app.add_option("--arch", arch, "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np");
+  frame_opt = app.add_option("--frame", frame_k, "frame number (scenes; default 0)");
+  app.add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
+  app.add_option("--channel", channel, "only this channel (scenes)");
+  app.add_option("--trace", trace_file, "write the RTL's waveform (FST) of the first image");
+  app.add_option("--stall-seed", stall_seed, "seed of the verification stall pattern (default 1)");
+  app.add_option("--input-gaps", input_gaps, "percent of cycles the polygon port offers nothing (0..95)")->check(CLI::Range(0, 95));
+  app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")->check(CLI::Range(0, 95));
+  app.add_option("--report", report_file, "write a JSON report");
 }
 
 int CosimCommand::run() {

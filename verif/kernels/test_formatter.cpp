@@ -1,6 +1,6 @@
 // The formatter kernel (hls/formatter/formatter.hpp, SPEC C eq. 1) against the C model's snapping
 // (cmodel/frame/screen_frame.cpp), independent exact references (frexp + 128-bit integers), its
-// double-precision twin (cmodel/segment/formatter_twin.hpp) and golden vectors
+// double-precision twin (cmodel/formatter/formatter_twin.hpp) and golden vectors
 // (verif/golden/formatter_vectors.txt). The same file runs in the native and the SystemC-typed
 // build (cig_kernel_tests, cig_kernel_tests_systemc).
 #include <cfloat>
@@ -21,7 +21,7 @@
 #include "digest.hpp"
 #include "frame/screen_frame.hpp"
 #include "hls/formatter/formatter.hpp"
-#include "segment/formatter_twin.hpp"
+#include "formatter/formatter_twin.hpp"
 
 namespace cig::hls {
 namespace {

@@ -20,7 +20,7 @@
 #include "hls/segment/light_segments.hpp"
 #include "hls/segment/overload.hpp"
 #include "hls/segment/segment_arith.hpp"
-#include "hls/segment/zfloat_ops.hpp"
+#include "hls/types/zfloat_ops.hpp"
 #include "reference/sample_lattice.hpp"
 #include "segment_test_support.hpp"
 
@@ -181,7 +181,7 @@ TEST(LightSegments, CodingTableIsTheLargestChord) {
 template <class P>
 void light_case(int log2, int cx, int cy, int d, long& lights, long& samples, Digest* dg) {
   const int n = 1 << log2, m = 4 * n;
-  const RowGeometry g = RowGeometry::for_raster(log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(log2);
   cig::SampleLattice lattice;
   lattice.raster = n;
   FormattedPrimitive l;
@@ -275,44 +275,44 @@ TEST(LightSegments, CoverageEqualsTheReferenceDiscCoarse) {
 // ---- Row and column geometry ------------------------------------------------------------------------
 
 // Half-unit position of sample row (or column) k by multiplication (valid for negative k too).
-int row_pos(const RowGeometry& g, int k) { return k * (1 << g.log2_half_spacing) + g.offset_half; }
+int row_pos(const LatticeGeometry& g, int k) { return k * (1 << g.log2_half_spacing) + g.offset_half; }
 
 // For every raster 16..1024: row k (line L = k/4, sample row r = k%4) lies at grid Y = u*L - 1 +
-// (2r + 1) u/8 (records.hpp, the reference's lattice): row_half(k) = 2Y exactly, and the reference's
-// sample coordinate of that Y is k. first_row_at_or_after_half(h) is the smallest k with
-// row_half(k) >= h for every h (brute force, including h before the first and after the last row);
+// (2r + 1) u/8 (records.hpp, the reference's lattice): sample_half(k) = 2Y exactly, and the reference's
+// sample coordinate of that Y is k. first_sample_at_or_after_half(h) is the smallest k with
+// sample_half(k) >= h for every h (brute force, including h before the first and after the last row);
 // the fixed and the twin's first_row_at_or_after agree on every grid Y 0..4095.
 void work_row_geometry(Digest* dg) {
   for (int log2 = kMinRasterLog2; log2 <= kMaxRasterLog2; ++log2) {
     const int n = 1 << log2, u = 4096 / n, rows = 4 * n;
-    const RowGeometry g = RowGeometry::for_raster(log2);
+    const LatticeGeometry g = LatticeGeometry::for_raster(log2);
     cig::SampleLattice lattice;
     lattice.raster = n;
     for (int k = 0; k < rows; ++k) {
       const int L = k / 4, r = k % 4;
       const int twice_y = 2 * (u * L - 1) + (2 * r + 1) * u / 4;
-      ASSERT_EQ(g.row_half(k), twice_y) << n << " " << k;
-      ASSERT_EQ(lattice.from_grid(0.5 * g.row_half(k)), double(k));
+      ASSERT_EQ(g.sample_half(k), twice_y) << n << " " << k;
+      ASSERT_EQ(lattice.from_grid(0.5 * g.sample_half(k)), double(k));
     }
-    int k = -3 * (rows + 8);  // brute-force pointer: smallest k with row_half(k) >= h
+    int k = -3 * (rows + 8);  // brute-force pointer: smallest k with sample_half(k) >= h
     for (int h = -2 * u - 8; h <= 8192 + 2 * u; ++h) {
       while (row_pos(g, k) < h) ++k;
       ASSERT_LT(row_pos(g, k - 1), h);
-      ASSERT_EQ(g.first_row_at_or_after_half(h), k) << "N " << n << " h " << h;
+      ASSERT_EQ(g.first_sample_at_or_after_half(h), k) << "N " << n << " h " << h;
       if (dg && (h & 7) == 0) dg->add_signed(k);
     }
     for (int y = 0; y < 4096; ++y) {
       const int f = DefaultSegmentArith::first_row_at_or_after(g, UInt<12>(y));
-      ASSERT_EQ(f, g.first_row_at_or_after_half(2 * y));
+      ASSERT_EQ(f, g.first_sample_at_or_after_half(2 * y));
       ASSERT_EQ(Twin::first_row_at_or_after(g, double(y)), f) << n << " " << y;
     }
   }
 }
 
-TEST(RowGeometry, EveryRasterRowsAndFirstRowMatchTheFormula) { work_row_geometry(nullptr); }
+TEST(LatticeGeometry, EveryRasterRowsAndFirstRowMatchTheFormula) { work_row_geometry(nullptr); }
 
-// first_column_at_or_after: the smallest sample column i with X_i >= x, X_i = row_half(i) / 2. Checked
-// by its definition on the raw value (row_half(i) * 2^(F-1) >= raw > row_half(i - 1) * 2^(F-1)),
+// first_column_at_or_after: the smallest sample column i with X_i >= x, X_i = sample_half(i) / 2. Checked
+// by its definition on the raw value (sample_half(i) * 2^(F-1) >= raw > sample_half(i - 1) * 2^(F-1)),
 // exhaustively over every raw value of the coarse X format at every raster and, for the medium and
 // fine formats, over every raw value within 4 LSB of every column position plus random values; the
 // twin's double version gives the same column for the same (dyadic) value.
@@ -324,7 +324,7 @@ void work_columns(Digest* dg) {
   const std::int64_t lo = -(std::int64_t(1) << (X::width - 1)), hi = (std::int64_t(1) << (X::width - 1)) - 1;
   Rng rng(0xC01);
   for (int log2 = kMinRasterLog2; log2 <= kMaxRasterLog2; ++log2) {
-    const RowGeometry g = RowGeometry::for_raster(log2);
+    const LatticeGeometry g = LatticeGeometry::for_raster(log2);
     auto check = [&](std::int64_t raw) {
       const X x = X::from_raw_value(raw);
       const int i = P::first_column_at_or_after(g, x);
@@ -345,9 +345,9 @@ void work_columns(Digest* dg) {
   }
 }
 
-TEST(RowGeometry, FirstColumnExactCoarse) { work_columns<SegmentFormatCoarse>(nullptr); }
-TEST(RowGeometry, FirstColumnExactMedium) { work_columns<SegmentFormatMedium>(nullptr); }
-TEST(RowGeometry, FirstColumnExactFine) { work_columns<SegmentFormatFine>(nullptr); }
+TEST(LatticeGeometry, FirstColumnExactCoarse) { work_columns<SegmentFormatCoarse>(nullptr); }
+TEST(LatticeGeometry, FirstColumnExactMedium) { work_columns<SegmentFormatMedium>(nullptr); }
+TEST(LatticeGeometry, FirstColumnExactFine) { work_columns<SegmentFormatFine>(nullptr); }
 
 // ---- Area code (eq. 6) ------------------------------------------------------------------------------
 
@@ -477,7 +477,7 @@ void work_policy_ops(Digest* dg) {
   const int n = 20000 * scale_of(dg);
   for (int t = 0; t < n; ++t) {
     const int log2 = int(between(rng, kMinRasterLog2, kMaxRasterLog2));
-    const RowGeometry g = RowGeometry::for_raster(log2);
+    const LatticeGeometry g = LatticeGeometry::for_raster(log2);
     const int s = g.log2_half_spacing;
     const int ya = int(below(rng, 4095)), yb = int(between(rng, ya + 1, 4095));
     const int xa = int(below(rng, 4096)), xb = t % 7 == 0 ? xa : int(below(rng, 4096));
@@ -489,11 +489,11 @@ void work_policy_ops(Digest* dg) {
     add(raw_of(slope));
     // The crossing at a row k whose Y lies in [ya, yb): xa + dx * (Y_k - ya) / dy, one rounding,
     // to the slope's fractional bits (it loads the stepping accumulator).
-    const int kf = g.first_row_at_or_after_half(2 * ya), kl = g.first_row_at_or_after_half(2 * yb) - 1;
+    const int kf = g.first_sample_at_or_after_half(2 * ya), kl = g.first_sample_at_or_after_half(2 * yb) - 1;
     if (kf <= kl) {
       const int k = int(between(rng, kf, kl));
       const S x = P::crossing(g, cxa, cya, cxb, cyb, k);
-      const i128 t2 = g.row_half(k) - 2 * ya;
+      const i128 t2 = g.sample_half(k) - 2 * ya;
       ASSERT_TRUE(raw_of(x) == (i128(xa) << Fs) + round_half_up(mul2k(dx * t2, Fs), 2 * dy));
       add(raw_of(x));
       // Stepping: x + rows * slope, exact in the accumulator, rounded once into X.
@@ -585,7 +585,7 @@ void work_slope_sweep(Digest* dg) {
   constexpr int Fs = P::Slope::frac_bits;
   const int dxs[] = {-4095, -4094, -2048, -1365, -7, -1, 0, 1, 3, 5, 1024, 2047, 2731, 4095};
   for (int log2 = kMinRasterLog2; log2 <= kMaxRasterLog2; ++log2) {
-    const RowGeometry g = RowGeometry::for_raster(log2);
+    const LatticeGeometry g = LatticeGeometry::for_raster(log2);
     for (int dy = 1; dy <= 4095; ++dy)
       for (int dx : dxs) {
         const int xa = dx < 0 ? 4095 : 0;

@@ -527,7 +527,7 @@ class SegmentChecker {
   static constexpr bool kExact = std::is_same_v<Fmt, SegmentFormatFine>;
 
   SegmentChecker(int log2, SegStats& st, Digest* dg)
-      : lat_(log2), g_(RowGeometry::for_raster(log2)), st_(st), dg_(dg),
+      : lat_(log2), g_(LatticeGeometry::for_raster(log2)), st_(st), dg_(dg),
         segs_(std::make_unique<Segment<P>[]>(kMaxLines)), twin_(std::make_unique<Segment<Twin>[]>(kMaxLines)) {}
 
   template <class Covered>
@@ -751,7 +751,7 @@ class SegmentChecker {
   }
 
   Lattice lat_;
-  RowGeometry g_;
+  LatticeGeometry g_;
   SegStats& st_;
   Digest* dg_;
   std::unique_ptr<Segment<P>[]> segs_;

@@ -24,7 +24,7 @@ using segtest::raw_of;
 // records.hpp: an N = 2^n raster has u = 4096 / N grid units per line; line L spans Y in
 // [u L - 1, u L - 1 + u) and its sample rows r = 0..3 lie at Y = u L - 1 + (2 r + 1) u / 8, so row
 // k = 4 L + r lies at 2Y = (u / 2) k + u / 4 - 2 half units. Columns lie at the same positions
-// along X. Written here from that definition, independently of RowGeometry.
+// along X. Written here from that definition, independently of LatticeGeometry.
 struct Lattice {
   int log2 = 0, n = 0, rows = 0;
   i128 u = 0;

@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
+#include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
 #include "hls/segment/frame_memory.hpp"
 #include "hls/segment/overload.hpp"

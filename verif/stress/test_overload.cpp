@@ -7,6 +7,7 @@
 // recount.
 #include <gtest/gtest.h>
 
+#include "registry/engine_registry.hpp"
 #include "stress/stress_support.hpp"
 #include "unit/test_support.hpp"
 

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "registry/engine_registry.hpp"
 #include "stress/stress_support.hpp"
 
 namespace cig::stress {

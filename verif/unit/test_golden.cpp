@@ -5,6 +5,7 @@
 #include "engine/engine.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
+#include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 

@@ -94,5 +94,19 @@ TEST(Projection, FormatterGridAndSampleLattice) {
   EXPECT_DOUBLE_EQ(grid_x(snap_grid_coordinate(0.25 + 0.3 / 2048)), 2559);
 }
 
+// The reference's double lattice and the kernels' integer one (hls/formatter/sample_lattice.hpp)
+// put every sample of every raster at the same place: sample k at half unit H_k maps back to k.
+TEST(Projection, ReferenceLatticeEqualsTheFormatterLattice) {
+  for (int log2 = hls::kMinRasterLog2; log2 <= hls::kMaxRasterLog2; ++log2) {
+    const SampleLattice lattice{1 << log2};
+    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2);
+    for (int k = 0; k < lattice.size(); ++k) {
+      ASSERT_EQ(lattice.from_grid(0.5 * g.sample_half(k)), double(k)) << "raster " << (1 << log2) << " sample " << k;
+      ASSERT_EQ(g.first_sample_at_or_after_half(g.sample_half(k)), k);
+      ASSERT_EQ(g.first_sample_at_or_after_half(g.sample_half(k) + 1), k + 1);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cig

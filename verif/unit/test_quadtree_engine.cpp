@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "image/image_compare.hpp"
 #include "pipeline/scene_pipeline.hpp"
+#include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig {

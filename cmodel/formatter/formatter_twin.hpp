@@ -1,6 +1,8 @@
-// Double-precision twin of the formatter kernel (hls/formatter/formatter.hpp, SPEC C eq. 1): the
-// same algorithm without quantization, and the bridge from the screen frame to the kernel's raw
-// records.
+// Stage C in the C model: the double-precision twin of the formatter kernel
+// (hls/formatter/formatter.hpp, SPEC C eq. 1), the same algorithm without quantization; the
+// bridge from the screen frame to the kernel's raw records; and the formatter grid in double
+// (grid_x, the snap of a whole frame) for the float reference. Every constant comes from
+// hls/formatter/sample_lattice.hpp.
 //
 //   x = clamp(2048*xs + 2047, 0, 4095)    y likewise (grid units, real)
 //   i = clamp(256*is, 0, 255)             d = clamp(2048*ds, 0, 7)   (light points; 0 for polygons)
@@ -12,9 +14,23 @@
 #include <cstdint>
 
 #include "frame/screen_frame.hpp"
-#include "hls/segment/records.hpp"
+#include "hls/formatter/records.hpp"
 
 namespace cig {
+
+// Formatter grid (eq. 1): X = 2048*Xs + 2047, Y = 2048*Ys + 2047, 4096 units per screen.
+constexpr double kGridScale = double(1 << hls::kGridScaleLog2);
+constexpr double kGridOffset = hls::kGridOffset;
+constexpr int kGridMax = hls::kGridMax;
+inline double grid_x(double xs) { return kGridScale * xs + kGridOffset; }
+// Light-point diameter in grid units, D = 2048*Ds clamped to 0..7 (eq. 1).
+constexpr double kMaxLightDiameterUnits = hls::kMaxLightDiameter;
+
+// Snaps positions to the formatter grid (round half away from zero, clamp 0..4095) and light
+// diameters to whole units 0..7, leaving everything else as it is: the float reference on a
+// snapped frame sees exactly the positions a fixed-point engine sees.
+ScreenFrame snap_to_formatter_grid(const ScreenFrame& f);
+double snap_grid_coordinate(double s);  // Xs or Ys -> snapped Xs or Ys
 
 double twin_grid(double s);         // X or Y from Xs or Ys
 double twin_intensity(double is);   // I from Is

@@ -1,4 +1,4 @@
-#include "segment/formatter_twin.hpp"
+#include "formatter/formatter_twin.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +17,28 @@ hls::UInt<64> bits_of(double x) {
 }
 
 }  // namespace
+
+double snap_grid_coordinate(double s) {
+  double g = std::round(grid_x(s));
+  g = std::min(std::max(g, 0.0), double(kGridMax));
+  return (g - kGridOffset) / kGridScale;
+}
+
+ScreenFrame snap_to_formatter_grid(const ScreenFrame& f) {
+  ScreenFrame s = f;
+  for (auto& p : s.polygons)
+    for (auto& v : p.vertices) {
+      v.xs = snap_grid_coordinate(v.xs);
+      v.ys = snap_grid_coordinate(v.ys);
+    }
+  for (auto& l : s.light_points) {
+    l.xs = snap_grid_coordinate(l.xs);
+    l.ys = snap_grid_coordinate(l.ys);
+    double d = std::min(std::round(kGridScale * l.ds), kMaxLightDiameterUnits);
+    l.ds = d / kGridScale;
+  }
+  return s;
+}
 
 double twin_grid(double s) { return std::clamp(kGridScale * s + kGridOffset, 0.0, double(kGridMax)); }
 double twin_intensity(double is) { return std::clamp(256.0 * is, 0.0, 255.0); }

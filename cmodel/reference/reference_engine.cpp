@@ -1,9 +1,7 @@
-#include <chrono>
+#include "reference/reference_engine.hpp"
 
 #include "common/error.hpp"
-#include "engine/engine.hpp"
-#include "quadtree/quadtree_engine.hpp"
-#include "segment/segment_engine.hpp"
+#include "reference/reference_raster.hpp"
 
 namespace cig {
 
@@ -11,7 +9,6 @@ namespace {
 
 class FloatEngine : public RasterEngine {
  public:
-  // --engine-opt visibility=depth (default, the z-buffer) | priority (list order, as the engines).
   explicit FloatEngine(const EngineOptions& o) : options_(o) {
     for (const auto& [key, value] : o.params) {
       if (key != "visibility")
@@ -48,17 +45,6 @@ class FloatEngine : public RasterEngine {
 
 }  // namespace
 
-std::vector<std::string> engine_names() { return {"float", "segment", "segment-double", "quadtree", "quadtree-double"}; }
-
-std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
-  if (name == "float") return std::make_unique<FloatEngine>(options);
-  if (name == "segment") return make_segment_engine(options, false);
-  if (name == "segment-double") return make_segment_engine(options, true);
-  if (name == "quadtree") return make_quadtree_engine(options, false);
-  if (name == "quadtree-double") return make_quadtree_engine(options, true);
-  std::string known;
-  for (const auto& n : engine_names()) known += (known.empty() ? "" : ", ") + n;
-  throw InputError("", "--engine", "unknown engine '" + name + "' (known: " + known + ")");
-}
+std::unique_ptr<RasterEngine> make_reference_engine(const EngineOptions& options) { return std::make_unique<FloatEngine>(options); }
 
 }  // namespace cig

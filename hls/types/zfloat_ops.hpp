@@ -2,7 +2,7 @@
 // depths, as eq. 4 and the video channel need it, rounded back to e8m7.
 #pragma once
 
-// hls-subset-helper: e8m7 arithmetic shared by the segment generator and the video channel.
+// hls-subset-helper: e8m7 arithmetic shared by the segment processor (eq. 4, video channel) and the quadtree processor (1/Z).
 
 #include "hls/types/fixed.hpp"
 #include "hls/types/zfloat.hpp"

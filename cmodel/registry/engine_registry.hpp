@@ -1,0 +1,18 @@
+// The registry of raster engines: the one place that knows every engine (--engine NAME). It sits
+// above the engines (cmodel/reference, segment, quadtree), which know only the interface
+// (engine/engine.hpp).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/engine.hpp"
+
+namespace cig {
+
+// Throws InputError (naming the option) for an unknown engine or an option it does not accept.
+std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options);
+std::vector<std::string> engine_names();
+
+}  // namespace cig

@@ -1,0 +1,26 @@
+# The product binary links no RTL (cmake -DCIG=<cig> -DNM=<nm> -DWITH_RTL=ON|OFF -P <this>):
+#   1. no Verilated symbol in `cig` (nm -C: Verilated*, Vqt_*, VerilatedContext, vl_*);
+#   2. without the RTL build, `cig cosim` is an input error (status 2) that says how to get it;
+#      with it, `cig cosim --help` reaches cig-cosim's options.
+cmake_minimum_required(VERSION 3.25)
+execute_process(COMMAND ${NM} -C ${CIG} RESULT_VARIABLE rc OUTPUT_VARIABLE syms ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "nm failed (${rc}): ${err}")
+endif()
+string(REGEX MATCHALL "[^\n]*(Verilated|Vqt_|vl_finish|VlWide)[^\n]*" rtl_syms "${syms}")
+list(LENGTH rtl_syms count)
+if(count GREATER 0)
+  list(SUBLIST rtl_syms 0 5 head)
+  message(FATAL_ERROR "cig holds ${count} Verilated symbol(s), e.g.\n${head}")
+endif()
+execute_process(COMMAND ${CIG} cosim --help RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(WITH_RTL)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "--input-gaps")
+    message(FATAL_ERROR "cig cosim --help did not reach cig-cosim (${rc}):\n${out}\n${err}")
+  endif()
+else()
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "cig-cosim is missing \\(build with -DCIG_WITH_RTL=ON")
+    message(FATAL_ERROR "cig cosim without the RTL build: expected status 2 and the reason, got ${rc}:\n${out}\n${err}")
+  endif()
+endif()
+message(STATUS "ok: cig has no Verilated symbol (${CIG}); cosim forwarding as expected (RTL ${WITH_RTL})")
