@@ -1,15 +1,25 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the project needs, only those missing (apt-get; as root, or
-# through sudo otherwise). Everything the build uses comes from these packages.
+# Installs the Debian packages the project needs, only those missing (apt-get; as root, or through
+# sudo otherwise). Everything the build uses comes from these packages.
+#   tools/deps.sh render   what building and running `cig` needs (Quick start, command 1)
+#   tools/deps.sh          everything: also the tests, SystemC, the RTL tools (command 2)
 set -euo pipefail
-packages=(
-  g++ cmake make pkg-config       # toolchain
-  libgtest-dev libbenchmark-dev   # GoogleTest, Google Benchmark
+render_packages=(
+  g++ cmake ninja-build pkg-config  # toolchain
   libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev
+)
+test_packages=(
+  python3                         # layering check, scene generators
+  libgtest-dev libbenchmark-dev   # GoogleTest, Google Benchmark
   libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
   assimp-testmodels               # real OBJ models for the loader tests
   verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
 )
+case "${1:-all}" in
+  render) packages=("${render_packages[@]}") ;;
+  all) packages=("${render_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: tools/deps.sh [render|all]" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -7,11 +7,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/deps.sh
 dir=build
-flags=(-DCMAKE_BUILD_TYPE=Release)
+flags=(-DCMAKE_BUILD_TYPE=Release -DCIG_BUILD_TESTS=ON -DCIG_WITH_RTL=ON)
 if [ "${1:-}" = "--sanitize" ]; then
   dir=build-asan
-  flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCIG_SANITIZE=ON -DCIG_WITH_RTL=OFF)
+  flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCIG_SANITIZE=ON -DCIG_BUILD_TESTS=ON -DCIG_WITH_RTL=OFF)
 fi
-cmake -S . -B "$dir" "${flags[@]}" >/dev/null
+tools/configure.sh "$dir" "${flags[@]}"
 cmake --build "$dir" -j"$(nproc)"
 ctest --test-dir "$dir" -j"$(nproc)" --output-on-failure
