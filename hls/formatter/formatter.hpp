@@ -23,8 +23,8 @@
 //           away from zero of the binary64 sum, snap_grid_coordinate in the formatter's twin,
 //           cmodel/formatter), and a sum that lies within half a binary64 spacing below a
 //           half-integer k + 1/2 (at most 2^-42 grid units) is rounded up to k + 1/2 there, hence
-//           to k + 1. The formatter reproduces that bit for
-//           bit (grid_coordinate below), so the snapped reference raster sees exactly its vertices.
+//           to k + 1. The formatter reproduces that bit for bit (grid_coordinate below), so the
+//           snapped reference raster sees exactly its vertices.
 //           Clamped to 0..4095. Below -0.5 round half up and round half away differ, but both
 //           clamp to 0.
 //   I, D, C round half up (floor(y + 1/2)) of the exact product, clamped to 0..max.
