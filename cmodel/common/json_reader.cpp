@@ -1,8 +1,11 @@
 #include "common/json_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace cig {
 
@@ -136,6 +139,11 @@ glm::dvec3 JsonNode::vec3() const {
   return {(*this)[0].number(), (*this)[1].number(), (*this)[2].number()};
 }
 
+glm::dvec3 JsonNode::vec3(double lo, double hi) const {
+  array_size(3, 3);
+  return {(*this)[0].number(lo, hi), (*this)[1].number(lo, hi), (*this)[2].number(lo, hi)};
+}
+
 glm::dvec3 JsonNode::colour() const {
   array_size(3, 3);
   return {(*this)[0].number(0, 1), (*this)[1].number(0, 1), (*this)[2].number(0, 1)};
@@ -151,9 +159,67 @@ bool JsonNode::boolean_or(const char* key, bool fallback) const {
   return n ? n->boolean() : fallback;
 }
 
+namespace {
+
+// The JSON path of the value the parser is at, and the keys already seen in every open object, so
+// that a repeated key is rejected where it occurs (nlohmann keeps the last one silently, and
+// `"raster": 4096, ..., "raster": 512` would render at 512).
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string& file) : file_(file) {}
+
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start:
+        enter_value();
+        open_.push_back({event == E::array_start, 0, {}, {}});
+        break;
+      case E::key: {
+        Scope& o = open_.back();
+        o.key = parsed.get<std::string>();
+        for (const std::string& k : o.keys)
+          if (k == o.key) throw InputError(file_, path(), "duplicate key '" + o.key + "' (each key may appear once)");
+        o.keys.push_back(o.key);
+        break;
+      }
+      case E::object_end:
+      case E::array_end:
+        open_.pop_back();
+        break;
+      case E::value:
+        enter_value();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Scope {
+    bool array;
+    std::size_t next_index;
+    std::string key;
+    std::vector<std::string> keys;
+  };
+  // A value (scalar, object or array) starts: in an array it takes the next index.
+  void enter_value() {
+    if (!open_.empty() && open_.back().array) open_.back().key = "[" + std::to_string(open_.back().next_index++) + "]";
+  }
+  std::string path() const {
+    std::string p;
+    for (const Scope& s : open_) p += (s.array || p.empty() ? "" : ".") + s.key;
+    return p;
+  }
+  const std::string& file_;
+  std::vector<Scope> open_;
+};
+
+}  // namespace
+
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, DuplicateKeyCheck(file));
   } catch (const nlohmann::json::parse_error& e) {
     // nlohmann reports "parse error at line L, column C: <what>"; keep its position, reword the rest.
     std::string what = e.what();
@@ -185,13 +251,34 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
   }
 }
 
-std::string read_text_file(const std::string& file) {
+std::string read_text_file(const std::string& file, long long max_bytes, const char* limit_option) {
+  if (file.empty()) throw InputError(file, "", "the path is empty");
+  if (file.find('\0') != std::string::npos) throw InputError(file, "", "the path contains a NUL character");
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(file, "", "cannot open file (missing or unreadable)");
+  if (std::filesystem::is_directory(status)) throw InputError(file, "", "is a directory, not a file");
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(file, "", "is not a regular file (a device, FIFO or socket cannot be read as input)");
+  const auto size = std::filesystem::file_size(file, ec);
+  const std::string limit = std::to_string(max_bytes) + " bytes" +
+                            (*limit_option ? std::string(" (") + limit_option + ")" : std::string());
+  if (!ec && (long long)size > max_bytes)
+    throw InputError(file, "", "file is " + std::to_string(size) + " bytes, more than the limit of " + limit);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "", "cannot open file (missing or unreadable)");
-  std::ostringstream s;
-  s << in.rdbuf();
+  // Read in chunks up to one byte past the limit, so a file that grows while it is read is caught.
+  std::string text;
+  text.reserve(std::size_t(std::min<long long>(ec ? 0 : (long long)size, max_bytes)));
+  char chunk[1 << 16];
+  while (in && (long long)text.size() <= max_bytes) {
+    in.read(chunk, sizeof chunk);
+    text.append(chunk, std::size_t(in.gcount()));
+  }
   if (in.bad()) throw InputError(file, "", "error while reading file");
-  return s.str();
+  if ((long long)text.size() > max_bytes)
+    throw InputError(file, "", "file grew beyond the limit of " + limit + " while it was read");
+  return text;
 }
 
 nlohmann::json read_json_file(const std::string& file) {

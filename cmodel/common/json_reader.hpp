@@ -49,6 +49,7 @@ class JsonNode {
 
   // Fixed-length numeric arrays.
   glm::dvec3 vec3() const;
+  glm::dvec3 vec3(double lo, double hi) const;  // each component in [lo, hi]
   glm::dvec3 colour() const;  // three numbers in [0, 1]
 
   // Convenience for optional members with defaults.
@@ -65,7 +66,13 @@ class JsonNode {
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 // Reads and parses a file; a missing or unreadable file throws InputError.
 nlohmann::json read_json_file(const std::string& file);
-// Reads a whole file as text; throws InputError naming `file` when it cannot be read.
-std::string read_text_file(const std::string& file);
+// The largest JSON input (scene, polygon list) read: its parsed document takes about ten times as
+// much memory.
+constexpr long long kMaxJsonFileBytes = 256ll << 20;
+// Reads a whole regular file as text, at most `max_bytes` of it (memory stays bounded whatever the
+// path names); throws InputError naming `file` when it is missing, not a regular file (a
+// directory, a device such as /dev/zero, a FIFO), larger than the limit, or cannot be read.
+std::string read_text_file(const std::string& file, long long max_bytes = kMaxJsonFileBytes,
+                           const char* limit_option = "");
 
 }  // namespace cig

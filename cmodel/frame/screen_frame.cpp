@@ -31,9 +31,8 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
   if (auto fg = root.find("fog")) {
     fg->allow_only({"colour", "start", "end"});
     f.fog.colour = fg->at("colour").colour();
-    f.fog.start = fg->at("start").number();
-    f.fog.end = fg->at("end").number();
-    if (f.fog.start < 0) fg->at("start").fail("fog start must not be negative");
+    f.fog.start = fg->at("start").number(0, kMaxDistance);
+    f.fog.end = fg->at("end").number(0, kMaxDistance);
     if (!(f.fog.end > f.fog.start)) fg->at("end").fail("fog end must be greater than fog start");
     f.background = f.fog.colour;
   }
@@ -61,7 +60,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
       ScreenVertex sv;
       sv.xs = v[0].number(-1, 1);
       sv.ys = v[1].number(-1, 1);
-      sv.zs = v[2].positive();
+      sv.zs = v[2].number(kMinScreenDepth, kMaxScreenDepth);
       sv.is = v[3].number(0, 1);
       sp.vertices.push_back(sv);
       xy.emplace_back(sv.xs, sv.ys);
@@ -80,7 +79,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
       c.array_size(3, 3);
       lp.xs = c[0].number(-1, 1);
       lp.ys = c[1].number(-1, 1);
-      lp.zs = c[2].positive();
+      lp.zs = c[2].number(kMinScreenDepth, kMaxScreenDepth);
       lp.ds = l.at("diameter").number(0, 1);
       if (auto col = l.find("colour")) lp.colour = col->colour();
       lp.intensity = l.find("intensity") ? l.at("intensity").number(0, 1) : 1.0;

@@ -23,7 +23,11 @@ double parse_coordinate(const std::string& tok, const std::string& file, std::si
   errno = 0;
   double x = std::strtod(s, &end);
   if (end == s || *end != '\0') fail(file, line, "'" + tok + "' is not a number");
-  if (!std::isfinite(x) || errno == ERANGE) fail(file, line, "coordinate '" + tok + "' is not a finite number");
+  // ERANGE also flags underflow: a denormal such as 4.9e-324 is a valid (tiny) coordinate.
+  if (!std::isfinite(x) || (errno == ERANGE && std::abs(x) >= 1))
+    fail(file, line, "coordinate '" + tok + "' is not a finite number");
+  if (std::abs(x) > kMaxWorldCoordinate)
+    fail(file, line, "coordinate '" + tok + "' lies beyond the valid range of +-1e8 m");
   return x;
 }
 
@@ -31,7 +35,10 @@ double parse_coordinate(const std::string& tok, const std::string& file, std::si
 
 ObjMesh parse_obj(const std::string& text, const std::string& file) {
   ObjMesh mesh;
-  std::istringstream in(text);
+  // A UTF-8 byte-order mark (written by some Windows exporters) is not part of the first statement.
+  const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+  std::istringstream in(bom ? text.substr(3) : text);
+  std::size_t face_statements = 0, first_degenerate_line = 0;
   std::string raw;
   std::size_t line = 0;
   while (std::getline(in, raw)) {
@@ -46,6 +53,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& file) {
       mesh.vertices.emplace_back(parse_coordinate(t[0], file, line), parse_coordinate(t[1], file, line),
                                  parse_coordinate(t[2], file, line));
     } else if (kw == "f") {
+      ++face_statements;
       std::vector<std::uint32_t> face;
       std::string tok;
       while (ls >> tok) {
@@ -73,6 +81,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& file) {
         // Exported models often carry zero-area faces; they cover nothing, so they are skipped
         // (and counted) rather than rejected. Dents and warps are still errors.
         ++mesh.degenerate_faces;
+        if (first_degenerate_line == 0) first_degenerate_line = line;
         continue;
       }
       if (!rule.empty()) fail(file, line, rule);
@@ -80,10 +89,16 @@ ObjMesh parse_obj(const std::string& text, const std::string& file) {
     }
     // Other statements (vt, vn, g, o, s, usemtl, mtllib, l, p) carry nothing this model uses.
   }
-  if (mesh.faces.empty()) throw InputError(file, "", "model has no faces");
+  if (face_statements == 0) throw InputError(file, "", "model has no faces (no 'f' statement)");
+  if (mesh.faces.empty())
+    throw InputError(file, "line " + std::to_string(first_degenerate_line),
+                     "model has no faces: all " + std::to_string(face_statements) +
+                         " faces are degenerate (zero area), the first on this line");
   return mesh;
 }
 
-ObjMesh load_obj(const std::string& file) { return parse_obj(read_text_file(file), file); }
+ObjMesh load_obj(const std::string& file, long long max_bytes) {
+  return parse_obj(read_text_file(file, max_bytes, "--max-model-mb"), file);
+}
 
 }  // namespace cig

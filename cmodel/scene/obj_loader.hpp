@@ -1,5 +1,6 @@
 // Wavefront OBJ reader for subobject geometry: vertices ("v") and faces ("f"), triangles and
-// convex planar quads only. Errors name the file and line.
+// convex planar quads only. Errors name the file and line; the scene loader adds the scene place
+// (objects[i].subobjects[j].obj) that referenced the model.
 #pragma once
 
 #include <cstdint>
@@ -7,6 +8,8 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "scene/scene.hpp"
 
 namespace cig {
 
@@ -16,7 +19,9 @@ struct ObjMesh {
   std::size_t degenerate_faces = 0;  // zero-area faces skipped
 };
 
-ObjMesh load_obj(const std::string& file);
+// Reads a regular file of at most `max_bytes` (a directory, device or FIFO is refused before any
+// read), with or without a UTF-8 byte-order mark.
+ObjMesh load_obj(const std::string& file, long long max_bytes = kDefaultMaxModelBytes);
 ObjMesh parse_obj(const std::string& text, const std::string& file);
 
 }  // namespace cig

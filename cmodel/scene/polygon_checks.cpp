@@ -71,7 +71,17 @@ std::string check_convex_planar(const std::vector<glm::dvec3>& v) {
   for (const auto& a : v) centroid += a / double(v.size());
   for (std::size_t i = 0; i < v.size(); ++i)
     for (std::size_t j = i + 1; j < v.size(); ++j) diameter = std::max(diameter, glm::length(v[i] - v[j]));
-  if (!(len > 1e-12 * diameter * diameter) || diameter == 0) return "polygon is degenerate (zero area)";
+  if (!(len > 1e-12 * diameter * diameter) || diameter == 0) {
+    // No net area: either every vertex lies on one line (degenerate), or the boundary crosses
+    // itself so that its signed areas cancel (a bow-tie), which is an error, not an empty face.
+    double spread = 0;
+    for (std::size_t i = 1; i + 1 < v.size(); ++i)
+      for (std::size_t j = i + 1; j < v.size(); ++j)
+        spread = std::max(spread, glm::length(glm::cross(v[i] - v[0], v[j] - v[0])));
+    if (diameter > 0 && spread > 1e-6 * diameter * diameter)
+      return "polygon is self-intersecting (a bow-tie: its signed areas cancel out)";
+    return "polygon is degenerate (zero area)";
+  }
   n /= len;
   for (std::size_t i = 0; i < v.size(); ++i) {
     double d = std::abs(glm::dot(v[i] - centroid, n));
@@ -92,7 +102,17 @@ std::string check_convex_planar(const std::vector<glm::dvec3>& v) {
 std::string check_convex_2d(const std::vector<glm::dvec2>& v) {
   if (v.size() < 3)
     return "polygon has " + std::to_string(v.size()) + " vertices; at least 3 are required";
-  return convexity_2d(v);
+  // Screen polygons may repeat a vertex: clipping a polygon at a plane through one of its corners
+  // leaves a zero-length edge that every engine draws as the polygon without it; the check applies
+  // to the distinct corners.
+  double diameter = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t j = i + 1; j < v.size(); ++j) diameter = std::max(diameter, glm::length(v[i] - v[j]));
+  std::vector<glm::dvec2> corners;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (glm::length(v[i] - v[(i + v.size() - 1) % v.size()]) > 1e-12 * diameter) corners.push_back(v[i]);
+  if (corners.size() < 3) return "polygon is degenerate (zero area)";
+  return convexity_2d(corners);
 }
 
 }  // namespace cig

@@ -24,6 +24,22 @@ constexpr int kMaxSceneVertices = kMaxScreenVertices - kClipPlanes;
 constexpr int kMinRaster = 16;
 constexpr int kMaxRaster = 4096;
 
+// The valid range of every number the loaders accept (scenes/README.md, "Valid ranges"), checked
+// at load with the JSON path. Inside them no arithmetic of the pipeline can overflow a double:
+// world points differ by at most 2 kMaxWorldCoordinate, their squares stay below 1e17, and the
+// projection divides by depths of at least kMinNear. Denormal inputs are valid numbers: they are
+// taken as the tiny values they are (0 for every purpose here), never as "not finite".
+constexpr double kMaxWorldCoordinate = 1e8;  // metres: positions, vertices, light points, offsets
+constexpr double kMinModelScale = 1e-6, kMaxModelScale = 1e6;  // OBJ subobject scale
+constexpr double kMaxAngleDeg = 360;  // heading, roll and channel yaw lie in [-360, 360]
+constexpr double kMinNear = 1e-3, kMaxNear = 1e4;  // near plane distance, metres
+constexpr double kMaxDistance = 1e9;  // fog start and end, bounding-sphere radius, metres
+constexpr double kMaxLightDiameter = 1e5;  // light-point diameter, metres
+// Screen depths of a polygon list: what the geometric processor can produce from the ranges above.
+constexpr double kMinScreenDepth = kMinNear, kMaxScreenDepth = kMaxDistance;
+// A model file larger than this is rejected before it is read (a setting: --max-model-mb).
+constexpr long long kDefaultMaxModelBytes = 64ll << 20;
+
 struct Polygon {
   std::vector<std::uint32_t> indices;  // into Subobject::vertices, counter-clockwise seen from the front
   Rgb colour{1, 1, 1};

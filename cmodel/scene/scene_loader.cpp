@@ -17,14 +17,38 @@ bool valid_raster_size(long long n) {
 
 namespace {
 
+// A world position or object-space point (metres): every component within the valid range.
+glm::dvec3 read_point(const JsonNode& n) { return n.vec3(-kMaxWorldCoordinate, kMaxWorldCoordinate); }
+
+// Heading, roll or yaw (degrees), default 0.
+double read_angle(const JsonNode& n, const char* key) {
+  auto a = n.find(key);
+  return a ? a->number(-kMaxAngleDeg, kMaxAngleDeg) : 0.0;
+}
+
+// Heading, pitch and roll of a pose.
+void read_attitude(const JsonNode& n, Pose& p) {
+  p.heading_deg = read_angle(n, "heading");
+  p.pitch_deg = n.find("pitch") ? n.at("pitch").number(-90, 90) : 0.0;
+  p.roll_deg = read_angle(n, "roll");
+}
+
 Pose read_pose(const JsonNode& n) {
   Pose p;
-  p.position = n.at("position").vec3();
-  p.heading_deg = n.number_or("heading", 0);
-  p.pitch_deg = n.number_or("pitch", 0);
-  p.roll_deg = n.number_or("roll", 0);
-  if (std::abs(p.pitch_deg) > 90) n.at("pitch").fail("pitch must lie in [-90, 90] degrees");
+  p.position = read_point(n.at("position"));
+  read_attitude(n, p);
   return p;
+}
+
+// The sun direction normalised without overflow or underflow: scaled by its largest component first
+// (so [1e200, -1e200, 0] and [1e-200, 0, 0] are directions like any other).
+glm::dvec3 read_direction(const JsonNode& n) {
+  glm::dvec3 d = n.vec3();
+  const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+  if (largest == 0) n.fail("sun direction must not be the zero vector");
+  // Directions of ordinary magnitude are normalised as given (their bits do not change).
+  if (largest > 1e-150 && largest < 1e150) return glm::normalize(d);
+  return glm::normalize(d / largest);
 }
 
 // Polygon attributes that a subobject may set once for all its polygons.
@@ -82,7 +106,24 @@ Polygon read_polygon(const JsonNode& n, const Subobject& sub, const PolygonDefau
   return p;
 }
 
-Subobject read_subobject(const JsonNode& n, const std::string& scene_file) {
+// The model an 'obj' subobject names, resolved against the scene's folder; any error in it is
+// reported at the scene place that referenced it (objects[i].subobjects[j].obj), with the model's
+// own file and line.
+ObjMesh read_model(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
+  const std::string path = n.string();
+  if (path.empty()) n.fail("the model path is empty");
+  if (path.find('\0') != std::string::npos) n.fail("the model path contains a NUL character");
+  std::filesystem::path model = path;
+  if (model.is_relative()) model = std::filesystem::path(scene_file).parent_path() / model;
+  const std::string file = model.lexically_normal().string();
+  try {
+    return load_obj(file, limits.max_model_bytes);
+  } catch (const InputError& e) {
+    n.fail("model '" + path + "'" + (e.where().empty() ? "" : " " + e.where()) + ": " + e.rule());
+  }
+}
+
+Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
   n.allow_only({"name", "vertices", "polygons", "obj", "offset", "scale", "crease_angle", "colour",
                 "opaque", "protected"});
   Subobject s;
@@ -92,12 +133,16 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file) {
   if (n.has("obj")) {
     if (n.has("vertices") || n.has("polygons"))
       n.fail("a subobject takes either 'obj' or 'vertices' + 'polygons', not both");
-    std::filesystem::path model = n.at("obj").string();
-    if (model.is_relative()) model = std::filesystem::path(scene_file).parent_path() / model;
-    glm::dvec3 offset = n.find("offset") ? n.at("offset").vec3() : glm::dvec3(0);
-    double scale = n.find("scale") ? n.at("scale").positive() : 1.0;
-    ObjMesh mesh = load_obj(model.lexically_normal().string());
-    for (const auto& v : mesh.vertices) s.vertices.push_back(offset + scale * v);
+    const glm::dvec3 offset = n.find("offset") ? read_point(n.at("offset")) : glm::dvec3(0);
+    const double scale = n.find("scale") ? n.at("scale").number(kMinModelScale, kMaxModelScale) : 1.0;
+    const ObjMesh mesh = read_model(n.at("obj"), scene_file, limits);
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const glm::dvec3 v = offset + scale * mesh.vertices[i];
+      if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kMaxWorldCoordinate)
+        n.at("scale").fail("model vertex " + std::to_string(i + 1) + " scaled and offset lies beyond " +
+                           std::to_string(kMaxWorldCoordinate) + " m");
+      s.vertices.push_back(v);
+    }
     for (const auto& f : mesh.faces) {
       if (f.size() > std::size_t(kMaxSceneVertices)) n.fail("model face has too many vertices");
       Polygon p;
@@ -112,7 +157,7 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file) {
     JsonNode verts = n.at("vertices");
     std::size_t nv = verts.array_size();
     if (nv < 3) verts.fail("a subobject needs at least 3 vertices");
-    for (std::size_t i = 0; i < nv; ++i) s.vertices.push_back(verts[i].vec3());
+    for (std::size_t i = 0; i < nv; ++i) s.vertices.push_back(read_point(verts[i]));
     JsonNode polys = n.at("polygons");
     std::size_t np = polys.array_size();
     if (np == 0) polys.fail("a subobject needs at least one polygon");
@@ -127,15 +172,15 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file) {
 LightPoint read_light_point(const JsonNode& n) {
   n.allow_only({"position", "diameter", "colour", "intensity"});
   LightPoint l;
-  l.position = n.at("position").vec3();
-  l.diameter = n.at("diameter").number();
+  l.position = read_point(n.at("position"));
+  l.diameter = n.at("diameter").number(0, kMaxLightDiameter);
   if (!(l.diameter > 0)) n.at("diameter").fail("light-point diameter must be positive");
   if (auto c = n.find("colour")) l.colour = c->colour();
   if (auto i = n.find("intensity")) l.intensity = i->number(0, 1);
   return l;
 }
 
-Object read_object(const JsonNode& n, const std::string& scene_file) {
+Object read_object(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
   n.allow_only({"name", "position", "heading", "pitch", "roll", "layer", "subobject_order", "bounding_sphere",
                 "subobjects", "light_points"});
   Object o;
@@ -147,14 +192,10 @@ Object read_object(const JsonNode& n, const std::string& scene_file) {
     o.subobjects_by_distance = v == "distance";
   }
   if (n.has("position")) o.pose = read_pose(n);
-  else {
-    o.pose.heading_deg = n.number_or("heading", 0);
-    o.pose.pitch_deg = n.number_or("pitch", 0);
-    o.pose.roll_deg = n.number_or("roll", 0);
-  }
+  else read_attitude(n, o.pose);
   if (auto subs = n.find("subobjects")) {
     std::size_t ns = subs->array_size();
-    for (std::size_t i = 0; i < ns; ++i) o.subobjects.push_back(read_subobject((*subs)[i], scene_file));
+    for (std::size_t i = 0; i < ns; ++i) o.subobjects.push_back(read_subobject((*subs)[i], scene_file, limits));
   }
   if (auto lps = n.find("light_points")) {
     std::size_t nl = lps->array_size();
@@ -167,9 +208,8 @@ Object read_object(const JsonNode& n, const std::string& scene_file) {
   // every vertex and light point (a visible object must never be flagged invisible).
   if (auto bs = n.find("bounding_sphere")) {
     bs->allow_only({"centre", "radius"});
-    o.sphere_centre = bs->at("centre").vec3();
-    o.sphere_radius = bs->at("radius").number();
-    if (o.sphere_radius < 0) bs->at("radius").fail("radius must not be negative");
+    o.sphere_centre = read_point(bs->at("centre"));
+    o.sphere_radius = bs->at("radius").number(0, kMaxDistance);
     o.sphere_given = true;
     const double slack = 1e-9 * std::max(1.0, o.sphere_radius);
     for (std::size_t si = 0; si < o.subobjects.size(); ++si)
@@ -197,7 +237,7 @@ Object read_object(const JsonNode& n, const std::string& scene_file) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& file) {
+Scene parse_scene(const std::string& text, const std::string& file, const SceneLimits& limits) {
   nlohmann::json doc = parse_json_text(text, file);
   JsonNode root(doc, file, "");
   if (root.at("format").string() != "cig-scene")
@@ -218,7 +258,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   }
   if (auto v = root.find("view")) {
     v->allow_only({"near", "light_point_min_diameter"});
-    if (v->has("near")) s.near = v->at("near").positive();
+    if (v->has("near")) s.near = v->at("near").number(kMinNear, kMaxNear);
     if (v->has("light_point_min_diameter"))
       s.light_rendering.min_diameter_units = v->at("light_point_min_diameter").number(0, 7);
   }
@@ -231,7 +271,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     c.allow_only({"name", "yaw", "pitch", "fov"});
     Channel ch;
     ch.name = c.find("name") ? c.at("name").string() : "ch" + std::to_string(i);
-    ch.yaw_deg = c.number_or("yaw", 0);
+    ch.yaw_deg = read_angle(c, "yaw");
     ch.pitch_deg = c.find("pitch") ? c.at("pitch").number(-90, 90) : 0.0;
     double fov = c.at("fov").number();
     if (!(fov > 0)) c.at("fov").fail("field of view must be positive, is " + std::to_string(fov));
@@ -242,9 +282,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
 
   if (auto l = root.find("lighting")) {
     l->allow_only({"sun_direction", "sun_intensity", "ambient"});
-    glm::dvec3 d = l->at("sun_direction").vec3();
-    if (glm::length(d) == 0) l->at("sun_direction").fail("sun direction must not be the zero vector");
-    s.lighting.sun_direction = glm::normalize(d);
+    s.lighting.sun_direction = read_direction(l->at("sun_direction"));
     if (l->has("sun_intensity")) s.lighting.sun_intensity = l->at("sun_intensity").number(0, 1);
     if (l->has("ambient")) s.lighting.ambient = l->at("ambient").number(0, 1);
   }
@@ -252,9 +290,8 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   if (auto f = root.find("fog")) {
     f->allow_only({"colour", "start", "end"});
     s.fog.colour = f->at("colour").colour();
-    s.fog.start = f->at("start").number();
-    s.fog.end = f->at("end").number();
-    if (s.fog.start < 0) f->at("start").fail("fog start must not be negative");
+    s.fog.start = f->at("start").number(0, kMaxDistance);
+    s.fog.end = f->at("end").number(0, kMaxDistance);
     if (!(s.fog.end > s.fog.start)) f->at("end").fail("fog end must be greater than fog start");
     has_fog = true;
   }
@@ -280,10 +317,12 @@ Scene parse_scene(const std::string& text, const std::string& file) {
 
   JsonNode objs = root.at("objects");
   std::size_t no = objs.array_size();
-  for (std::size_t i = 0; i < no; ++i) s.objects.push_back(read_object(objs[i], file));
+  for (std::size_t i = 0; i < no; ++i) s.objects.push_back(read_object(objs[i], file, limits));
   return s;
 }
 
-Scene load_scene(const std::string& file) { return parse_scene(read_text_file(file), file); }
+Scene load_scene(const std::string& file, const SceneLimits& limits) {
+  return parse_scene(read_text_file(file), file, limits);
+}
 
 }  // namespace cig

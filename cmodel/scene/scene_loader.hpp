@@ -8,8 +8,13 @@
 
 namespace cig {
 
-Scene load_scene(const std::string& file);
-Scene parse_scene(const std::string& text, const std::string& file);
+// Settings of the loader (cig's --max-model-mb).
+struct SceneLimits {
+  long long max_model_bytes = kDefaultMaxModelBytes;  // largest OBJ model file read
+};
+
+Scene load_scene(const std::string& file, const SceneLimits& limits = {});
+Scene parse_scene(const std::string& text, const std::string& file, const SceneLimits& limits = {});
 
 // Whole-pipeline rule on raster sizes: a power of two in [kMinRaster, kMaxRaster].
 bool valid_raster_size(long long n);

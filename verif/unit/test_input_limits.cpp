@@ -1,0 +1,96 @@
+// What the loaders accept at the edges of their valid ranges (scenes/README.md, "Valid ranges"),
+// and what they refuse before reading: the cases the bad-input corpus cannot hold as files.
+#include <sys/stat.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "common/error.hpp"
+#include "common/json_reader.hpp"
+#include "frame/screen_frame.hpp"
+#include "scene/obj_loader.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_support.hpp"
+
+namespace cig {
+namespace {
+
+std::string scene_with_sun(const std::string& direction) {
+  return R"({"format": "cig-scene", "version": 1, "channels": [{"fov": 40}],
+    "lighting": {"sun_direction": )" + direction + R"(},
+    "observer": {"keyframes": [{"frame": 0, "position": [0, -10, 2]}]},
+    "objects": [{"light_points": [{"position": [0, 0, 1], "diameter": 1}]}]})";
+}
+
+TEST(InputLimits, SunDirectionsOfAnyMagnitudeNormalise) {
+  const Scene huge = parse_scene(scene_with_sun("[1e200, -1e200, 0]"), "huge.json");
+  EXPECT_NEAR(huge.lighting.sun_direction.x, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(huge.lighting.sun_direction.y, -std::sqrt(0.5), 1e-15);
+  const Scene tiny = parse_scene(scene_with_sun("[1e-200, 0, 0]"), "tiny.json");
+  EXPECT_EQ(tiny.lighting.sun_direction.x, 1.0);
+  const Scene denormal = parse_scene(scene_with_sun("[0, 0, 5e-324]"), "denormal.json");
+  EXPECT_EQ(denormal.lighting.sun_direction.z, 1.0);
+  EXPECT_THROW(parse_scene(scene_with_sun("[0, 0, 0]"), "zero.json"), InputError);
+}
+
+TEST(InputLimits, ObjByteOrderMarkIsNotPartOfTheFirstVertex) {
+  const std::string body = "v -1 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n";
+  const ObjMesh plain = parse_obj(body, "plain.obj");
+  const ObjMesh marked = parse_obj("\xEF\xBB\xBF" + body, "marked.obj");
+  ASSERT_EQ(marked.vertices.size(), 3u);
+  EXPECT_EQ(marked.vertices[0], plain.vertices[0]);
+  EXPECT_EQ(marked.faces, plain.faces);
+  const ObjMesh shipped = load_obj(test::source_path("verif/bad_input/models/box_bom.obj"));
+  EXPECT_EQ(shipped.vertices[0], glm::dvec3(-1, 0, 0));
+}
+
+TEST(InputLimits, DenormalObjCoordinateIsATinyNumber) {
+  const ObjMesh m = parse_obj("v 4.9e-324 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "denormal.obj");
+  EXPECT_GT(m.vertices[0].x, 0.0);
+  EXPECT_LT(m.vertices[0].x, 1e-300);
+  EXPECT_THROW(parse_obj("v 1e999 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "inf.obj"), InputError);
+  EXPECT_THROW(parse_obj("v 2e8 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "far.obj"), InputError);
+}
+
+// A FIFO would block a reader forever: it is refused from its file type, before any open().
+TEST(InputLimits, FifoAndDevicesAreRefusedWithoutReading) {
+  const std::string fifo = (std::filesystem::temp_directory_path() / ("cig_fifo_" + std::to_string(::getpid()))).string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    load_obj(fifo);
+    ADD_FAILURE() << "a FIFO was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(fifo);
+  EXPECT_THROW(load_obj("/dev/urandom"), InputError);
+  EXPECT_THROW(load_polygon_list("/dev/zero"), InputError);
+}
+
+TEST(InputLimits, ModelSizeLimitIsASetting) {
+  const std::string box = test::source_path("verif/bad_input/models/box_bom.obj");
+  EXPECT_NO_THROW(load_obj(box));
+  try {
+    load_obj(box, 16);
+    ADD_FAILURE() << "a model above the limit was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the limit of 16 bytes (--max-model-mb)"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Screen polygons may repeat a vertex (clipping through a corner): the list the geometric
+// processor writes is read back.
+TEST(InputLimits, PolygonListAcceptsRepeatedVertices) {
+  const std::string text = R"({"format": "cig-polys", "version": 1, "raster": 64, "polygons": [
+    {"vertices": [[-0.5, -0.5, 10, 1], [0.5, -0.5, 10, 1], [0.5, -0.5, 10, 1], [0, 0.5, 10, 1]]}]})";
+  const ScreenFrame f = parse_polygon_list(text, "repeat.polys.json");
+  EXPECT_EQ(f.polygons[0].vertices.size(), 4u);
+  EXPECT_EQ(polygon_list_json(parse_polygon_list(polygon_list_json(f), "again")), polygon_list_json(f));
+}
+
+}  // namespace
+}  // namespace cig
