@@ -170,7 +170,9 @@ class ArchModel {
       ++t;
       if (next_root >= roots.size() && in_flight_ == 0) break;
     }
-    st.cycles = next_root == 0 && roots.empty() ? 0 : t;
+    // At least one cycle: the one in which the frame starts (an empty frame is idle at the next
+    // edge), as the RTL counts it (verif/cosim/rtl_runner.cpp).
+    st.cycles = t;
     return st;
   }
 
