@@ -5,6 +5,7 @@
 #include "cli/cli_common.hpp"
 #include "common/error.hpp"
 #include "common/json_reader.hpp"
+#include "frame/input_kind.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cli {
@@ -24,7 +25,7 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
                           int channel) {
   FrameJobs j;
   const std::string text = read_text_file(input);
-  if (text.find("\"cig-polys\"") != std::string::npos) {
+  if (input_kind(text, input) == InputKind::kPolygonList) {
     j.list_.push_back(parse_polygon_list(text, input));
     j.jobs_.push_back({j.list_[0].frame, j.list_[0].channel});
     return j;

@@ -10,6 +10,7 @@
 
 #include "common/error.hpp"
 #include "common/json_reader.hpp"
+#include "frame/input_kind.hpp"
 #include "frame/screen_frame.hpp"
 #include "scene/obj_loader.hpp"
 #include "scene/scene_loader.hpp"
@@ -90,6 +91,19 @@ TEST(InputLimits, PolygonListAcceptsRepeatedVertices) {
   const ScreenFrame f = parse_polygon_list(text, "repeat.polys.json");
   EXPECT_EQ(f.polygons[0].vertices.size(), 4u);
   EXPECT_EQ(polygon_list_json(parse_polygon_list(polygon_list_json(f), "again")), polygon_list_json(f));
+}
+
+// compare, sweep and cosim take a scene or a polygon list: the format field decides, so a scene
+// with a channel called "cig-polys" is a scene.
+TEST(InputLimits, InputKindComesFromTheFormatField) {
+  const std::string scene = R"({"format": "cig-scene", "version": 1, "channels": [{"name": "cig-polys", "fov": 40}],
+    "observer": {"keyframes": [{"frame": 0, "position": [0, -10, 2]}]},
+    "objects": [{"light_points": [{"position": [0, 0, 1], "diameter": 1}]}]})";
+  EXPECT_EQ(input_kind(scene, "scene.json"), InputKind::kScene);
+  EXPECT_NO_THROW(parse_scene(scene, "scene.json"));
+  EXPECT_EQ(input_kind(R"({"format": "cig-polys", "name": "cig-scene"})", "p.json"), InputKind::kPolygonList);
+  EXPECT_THROW(input_kind(R"({"format": "cig-image"})", "x.json"), InputError);
+  EXPECT_THROW(input_kind(R"(["cig-polys"])", "x.json"), InputError);
 }
 
 }  // namespace
