@@ -10,6 +10,8 @@ render_packages=(
 )
 test_packages=(
   python3                         # layering check, scene generators
+  clang libclang-rt-14-dev        # the sanitizer build and the libFuzzer targets (verif/fuzz)
+  clang-format                    # the layout check (.clang-format)
   libgtest-dev libbenchmark-dev   # GoogleTest, Google Benchmark
   libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
   assimp-testmodels               # real OBJ models for the loader tests

@@ -51,7 +51,7 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
 }
 
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {
-  return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), 0};
+  return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), {}};
 }
 
 void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference) {

@@ -50,7 +50,10 @@ void run_engine(benchmark::State& state, const std::string& engine_name, const c
 void register_all() {
   const std::vector<std::pair<std::string, const ScreenFrame& (*)()>> inputs = {{"airfield", &airfield_frame},
                                                                                 {"depth10", &depth10_frame}};
-  for (const auto& [input, frame] : inputs)
+  for (const auto& input_and_frame : inputs) {
+    // Named copies: a lambda cannot capture a structured binding in C++17 (clang rejects it).
+    const std::string& input = input_and_frame.first;
+    const auto frame = input_and_frame.second;
     for (const char* masks : {"on", "off"})
       for (const char* engine : {"quadtree", "quadtree-double"}) {
         cig::EngineOptions o;
@@ -58,6 +61,7 @@ void register_all() {
         const std::string name = std::string(engine) + "/" + input + "/masks-" + masks;
         cig::bench::register_case(name, [=](benchmark::State& s) { run_engine(s, engine, o, frame); });
       }
+  }
 }
 
 }  // namespace

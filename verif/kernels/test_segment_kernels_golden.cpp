@@ -328,12 +328,12 @@ TEST(SegmentKernels, GoldenVectors) {
   }
   // The file holds what it should: a few dozen polygons and their edges and segments, lights, and
   // every raster line.
-  EXPECT_GE(tags['P'], 30);
-  EXPECT_GE(tags['L'], 4);
+  EXPECT_GE(tags[unsigned('P')], 30);
+  EXPECT_GE(tags[unsigned('L')], 4);
   EXPECT_GE(light_segments, 4);
-  EXPECT_GE(tags['E'], 60);
-  EXPECT_GE(tags['S'], 150);
-  EXPECT_EQ(tags['R'], 1 << sc.log2);
+  EXPECT_GE(tags[unsigned('E')], 60);
+  EXPECT_GE(tags[unsigned('S')], 150);
+  EXPECT_EQ(tags[unsigned('R')], 1 << sc.log2);
 }
 
 }  // namespace
