@@ -189,5 +189,20 @@ TEST(Cosim, AirfieldFrames) {
   }
 }
 
+// A frame with no polygon (everything culled): both sides take the frame-start cycle and nothing
+// else, with or without stalls, and the image is the background.
+TEST(Cosim, EmptyFrameTakesTheFrameStartCycleOnBothSides) {
+  for (int t = 1; t <= 2; ++t)
+    for (const StallConfig stalls : {StallConfig{}, StallConfig{7, 50, 50}}) {
+      SCOPED_TRACE("tree levels " + std::to_string(t) + ", stalls " + std::to_string(stalls.input_gap_percent));
+      auto rtl = make_rtl_runner(6, t);
+      const CosimResult r = cosim_frame(empty_frame(64), *rtl, RtlConfig{6, t}, stalls);
+      EXPECT_TRUE(r.comparison.ok()) << r.comparison.first;
+      EXPECT_EQ(r.comparison.records_compared, 64 * 64);  // the image, all background; no window record
+      EXPECT_EQ(r.model.cycles, 1);
+      EXPECT_EQ(r.rtl.cycles, 1);
+    }
+}
+
 }  // namespace
 }  // namespace cig::cosim
