@@ -1,7 +1,8 @@
-// Pieces shared by the cig commands.
+// Pieces shared by the cig commands: the engine options every command takes, frame ranges, output
+// file names.
 #pragma once
 
-#include <chrono>
+#include <cctype>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -9,17 +10,13 @@
 #include <CLI/CLI.hpp>
 
 #include "common/error.hpp"
+#include "common/timing.hpp"
 #include "engine/engine.hpp"
 #include "registry/engine_registry.hpp"
-#include <cctype>
 
 namespace cig::cli {
 
-using Clock = std::chrono::steady_clock;
-inline double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
+// --engine, --engine-opt, --snap and the quadtree shorthands --arch, --masks.
 struct EngineArgs {
   std::string engine = "float";
   std::vector<std::string> opts;
@@ -86,7 +83,6 @@ inline std::string safe_name(const std::string& s) {
   return r;
 }
 
-
 // The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.
 inline void frame_range(const std::string& frames_text, int frame_k, bool frame_given, int frame_count,
                         const std::string& scene_file, int& a, int& b) {
@@ -101,15 +97,5 @@ inline void frame_range(const std::string& frames_text, int frame_k, bool frame_
                          std::to_string(last) + ")");
 }
 
-// `cig compare` (compare_command.cpp).
-struct CompareCommand {
-  CLI::App* sub = nullptr;
-  std::string input, out_dir, report_file, frames_text, reference = "float";
-  int frame_k = -1, channel = -1;
-  CLI::Option* frame_opt = nullptr;
-  EngineArgs engine;
-  void add_to(CLI::App& app);
-  int run();
-};
 
 }  // namespace cig::cli

@@ -11,7 +11,7 @@
 #include <iostream>
 #include <thread>
 
-#include "cli/cli_common.hpp"
+#include "cli/compare_command.hpp"
 #include "cli/frame_jobs.hpp"
 #include "image/image_compare.hpp"
 #include "registry/engine_registry.hpp"

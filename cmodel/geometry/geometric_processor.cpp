@@ -1,11 +1,11 @@
 #include "geometry/geometric_processor.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
+#include "common/timing.hpp"
 #include "geometry/clip.hpp"
 #include "hls/formatter/sample_lattice.hpp"  // the scene sizes light points in formatter grid units
 
@@ -22,7 +22,7 @@ ScreenVertex project(const glm::dvec3& e, double intensity, double t) {
 
 ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const ChannelView& view,
                             const PriorityList& list, GeometryStats& stats) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   ScreenFrame f;
   f.raster = scene.raster;
   f.frame = view.frame;
@@ -119,7 +119,7 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
   }
   stats.polygons_out += f.polygons.size();
   stats.light_points_out += f.light_points.size();
-  stats.ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  stats.ms += ms_since(t0);
   return f;
 }
 

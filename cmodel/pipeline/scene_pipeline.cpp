@@ -1,11 +1,11 @@
 #include "pipeline/scene_pipeline.hpp"
 
 #include <atomic>
-#include <chrono>
 #include <exception>
 #include <mutex>
 #include <thread>
 
+#include "common/timing.hpp"
 #include "geometry/geometric_processor.hpp"
 #include "manager/scene_manager.hpp"
 #include "registry/engine_registry.hpp"
@@ -15,11 +15,11 @@ namespace cig {
 ScenePipeline::ScenePipeline(const Scene& scene) : scene_(scene), db_(build_world_database(scene)) {}
 
 ScreenFrame ScenePipeline::geometry(int frame, int channel, nlohmann::ordered_json& report) const {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   const ChannelView view = make_channel_view(scene_, frame, channel);
   SceneManagerStats ms;
   PriorityList list = manage_channel(db_, view, ms);
-  ms.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  ms.ms = ms_since(t0);
   GeometryStats gs;
   ScreenFrame f = process_channel(scene_, db_, view, list, gs);
   report["scene_manager"] = {{"objects", ms.objects},
@@ -60,9 +60,9 @@ std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<in
         co.report["channel"] = co.channel;
         co.report["name"] = scene_.channels[std::size_t(co.channel)].name;
         ScreenFrame f = geometry(frame, co.channel, co.report);
-        const auto t0 = std::chrono::steady_clock::now();
+        const auto t0 = Clock::now();
         EngineRun run = eng->render(f);
-        run.report["ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        run.report["ms"] = ms_since(t0);
         co.out = std::move(run.out);
         co.report["raster"] = std::move(run.report);
       }

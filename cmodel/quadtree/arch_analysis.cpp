@@ -1,7 +1,6 @@
 #include "quadtree/arch_analysis.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -10,6 +9,7 @@
 #include <stdexcept>
 
 #include "common/error.hpp"
+#include "common/timing.hpp"
 #include "hls/quadtree/pe.hpp"
 #include "hls/quadtree/setup.hpp"
 
@@ -299,7 +299,7 @@ std::vector<AnalysisWindow> rect_stream(const TestRect& r, int count, std::uint3
 }
 
 ArchMeasurement run_architecture(const Architecture& arch, const std::vector<AnalysisWindow>& roots, int fifo_depth) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   ArchConfig cfg;
   cfg.fifo_depth = fifo_depth;
   cfg.masks = false;
@@ -323,7 +323,7 @@ ArchMeasurement run_architecture(const Architecture& arch, const std::vector<Ana
   m.utilisation = st.cycles > 0 ? double(m.busy_cycles) / (double(st.cycles) * double(pes)) : 0;
   for (const LevelStats& l : st.level) m.covered.push_back(l.covered);
   if (!m.covered.empty()) m.covered[0] = (long long)roots.size();
-  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  m.seconds = seconds_since(t0);
   return m;
 }
 

@@ -1,13 +1,13 @@
 #include "quadtree/quadtree_engine.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "common/timing.hpp"
 #include "common/error.hpp"
 #include "quadtree/quadtree_frame.hpp"
 
@@ -15,8 +15,6 @@ namespace cig {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 struct QuadOptions {
   std::string arch = "np";

@@ -1,20 +1,16 @@
 #include "reference/reference_raster.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <vector>
 
+#include "common/timing.hpp"
 #include "reference/coverage.hpp"
 
 namespace cig {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 // w = 1/Z as an affine function of sample coordinates, fitted through the vertex triple of
 // largest area (exact for a planar polygon; well conditioned).

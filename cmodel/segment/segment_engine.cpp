@@ -1,12 +1,12 @@
 #include "segment/segment_engine.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numeric>
 #include <vector>
 
+#include "common/timing.hpp"
 #include "common/error.hpp"
 #include "hls/formatter/formatter.hpp"
 #include "hls/segment/edge_generator.hpp"
@@ -21,8 +21,6 @@ namespace cig {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Seed 001 timings, for the report's estimate of the segment processor's time per frame.
 constexpr double kEdgeFormationUs = 10.0;  // per edge, at most

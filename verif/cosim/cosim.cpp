@@ -1,10 +1,10 @@
 #include "cosim.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/timing.hpp"
 
 namespace cig::cosim {
 
@@ -16,7 +16,7 @@ std::string RtlConfig::arch_text() const {
 
 Trace model_trace(const quad::Architecture& arch, const std::vector<hls::QuadWindow<RtlArith>>& roots,
                   quad::PixelFrame<RtlArith>& pixels, const StallConfig& stalls, int fifo_depth, quad::ArchStats* stats) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   quad::ArchConfig cfg;
   cfg.fifo_depth = fifo_depth;
   cfg.masks = true;
@@ -34,7 +34,7 @@ Trace model_trace(const quad::Architecture& arch, const std::vector<hls::QuadWin
   std::sort(t.mask_sets.begin(), t.mask_sets.end());
   IdBuffer ids;
   pixels.resolve(t.image, ids);
-  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  t.seconds = seconds_since(t0);
   if (stats) *stats = std::move(st);
   return t;
 }

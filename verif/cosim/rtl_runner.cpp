@@ -2,7 +2,6 @@
 // (qt_raster_cosim_tb.sv; verif/cosim/CMakeLists.txt verilates each with its own prefix) behind
 // one interface: table configuration, frame start, the polygon stream with
 // the verification stalls, the trace ports read every cycle, the read-out of the final pixels.
-#include <chrono>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
+#include "common/timing.hpp"
 #include "Vqt_raster_n6_t1.h"
 #include "Vqt_raster_n6_t2.h"
 #include "Vqt_raster_n9_t1.h"
@@ -67,7 +67,7 @@ class RtlRunnerImpl final : public RtlRunner {
     edge();
     top_->frame_start_i = 0;
 
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     Trace t;
     t.pe.assign(std::size_t(npe_), {});
     t.pixel.assign(std::size_t(npix_), {});
@@ -120,7 +120,7 @@ class RtlRunnerImpl final : public RtlRunner {
       if (offer && top_->poly_ready_o) ++next;
       fall();
     }
-    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t.seconds = seconds_since(t0);
     top_->poly_valid_i = 0;
     std::sort(t.mask_sets.begin(), t.mask_sets.end());
     // Read-out.

@@ -1,0 +1,23 @@
+// `cig compare` (compare_command.cpp): an engine's image error against the float reference, per
+// frame and channel.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cli_common.hpp"
+
+namespace cig::cli {
+
+struct CompareCommand {
+  CLI::App* sub = nullptr;
+  std::string input, out_dir, report_file, frames_text, reference = "float";
+  int frame_k = -1, channel = -1;
+  CLI::Option* frame_opt = nullptr;
+  EngineArgs engine;
+  void add_to(CLI::App& app);
+  int run();
+};
+
+}  // namespace cig::cli

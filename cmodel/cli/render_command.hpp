@@ -1,0 +1,24 @@
+// `cig render` (render_command.cpp): frames of a scene through stages A, B and an engine, one PNG per
+// channel, a panorama, and a report.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cli_common.hpp"
+
+namespace cig::cli {
+
+struct RenderCommand {
+  CLI::App* sub = nullptr;
+  std::string scene_file, out_dir = "out", report_file, frames_text;
+  int frame_k = -1, channel = -1, threads = 1;
+  bool write_ids_files = false;
+  CLI::Option* frame_opt = nullptr;
+  EngineArgs engine;
+  void add_to(CLI::App& app);
+  int run();
+};
+
+}  // namespace cig::cli
