@@ -117,53 +117,92 @@ RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& s
 
 namespace {
 
-RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats, Visibility visibility) {
-  auto t0 = Clock::now();
-  double resolve_ms = 0;
-  const SampleLattice lattice{frame.raster};
-  const int m = lattice.size();
-  const int n = frame.raster;
-  const int strip_pixels = std::min(kStripPixels, n);
-  const int strip_rows = strip_pixels * kSamplesPerSide;
-  const int strips = n / strip_pixels;
-  RasterImage out{Image(n, n), IdBuffer(n, n)};
+// One frame of the reference, in phases: set-up (strip bins, each polygon's coverage and depth
+// plane, which lights are visible), then per strip of sample rows: polygons, light points, resolve.
+class ReferenceFrame {
+ public:
+  ReferenceFrame(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats, Visibility visibility)
+      : frame_(frame),
+        stats_(stats),
+        visibility_(visibility),
+        lattice_{frame.raster},
+        m_(lattice_.size()),
+        n_(frame.raster),
+        strip_pixels_(std::min(kStripPixels, n_)),
+        strip_rows_(strip_pixels_ * kSamplesPerSide),
+        strips_(n_ / strip_pixels_) {
+    bin();
+    set_up_polygons(depth_source);
+    decide_light_visibility();
+  }
 
-  StripBins poly_bins, light_bins;
-  poly_bins.build(frame.polygons.size(), strips, strip_rows, [&](std::size_t k, double& lo, double& hi) {
-    lo = 1e300;
-    hi = -1e300;
-    for (const auto& v : frame.polygons[k].vertices) {
-      lo = std::min(lo, lattice.from_screen(v.ys));
-      hi = std::max(hi, lattice.from_screen(v.ys));
+  RasterImage render() {
+    const auto t0 = Clock::now();
+    double resolve_ms = 0;
+    RasterImage out{Image(n_, n_), IdBuffer(n_, n_)};
+    const std::size_t strip_samples = std::size_t(m_) * std::size_t(strip_rows_);
+    depth_.resize(strip_samples);
+    owner_.resize(strip_samples);
+    intensity_.resize(strip_samples);
+    light_.resize(strip_samples);
+    for (int strip = 0; strip < strips_; ++strip) {
+      std::fill(depth_.begin(), depth_.end(), 0.0);
+      std::fill(owner_.begin(), owner_.end(), -1);
+      std::fill(light_.begin(), light_.end(), -1);
+      draw_polygons(strip);
+      draw_lights(strip);
+      const auto t_resolve = Clock::now();
+      resolve(strip, out);
+      resolve_ms += ms_since(t_resolve);
     }
-  });
-  auto light_geometry = [&](const ScreenLightPoint& l, double& cx, double& cy, double& r) {
-    cx = lattice.from_screen(l.xs);
-    cy = lattice.from_screen(l.ys);
-    r = lattice.length_from_grid(0.5 * std::min(kGridScale * l.ds, kMaxLightDiameterUnits));
-  };
-  light_bins.build(frame.light_points.size(), strips, strip_rows, [&](std::size_t k, double& lo, double& hi) {
-    double cx, cy, r;
-    light_geometry(frame.light_points[k], cx, cy, r);
-    lo = cy - r;
-    hi = cy + r;
-  });
-  stats.polygons += frame.polygons.size();
-  stats.light_points += frame.light_points.size();
+    stats_.resolve_ms += resolve_ms;
+    stats_.raster_ms += ms_since(t0) - resolve_ms;
+    return out;
+  }
+
+ private:
+  void light_geometry(const ScreenLightPoint& l, double& cx, double& cy, double& r) const {
+    cx = lattice_.from_screen(l.xs);
+    cy = lattice_.from_screen(l.ys);
+    r = lattice_.length_from_grid(0.5 * std::min(kGridScale * l.ds, kMaxLightDiameterUnits));
+  }
+
+  // Polygons and light points binned by the strips of sample rows they touch.
+  void bin() {
+    poly_bins_.build(frame_.polygons.size(), strips_, strip_rows_, [&](std::size_t k, double& lo, double& hi) {
+      lo = 1e300;
+      hi = -1e300;
+      for (const auto& v : frame_.polygons[k].vertices) {
+        lo = std::min(lo, lattice_.from_screen(v.ys));
+        hi = std::max(hi, lattice_.from_screen(v.ys));
+      }
+    });
+    light_bins_.build(frame_.light_points.size(), strips_, strip_rows_, [&](std::size_t k, double& lo, double& hi) {
+      double cx, cy, r;
+      light_geometry(frame_.light_points[k], cx, cy, r);
+      lo = cy - r;
+      hi = cy + r;
+    });
+    stats_.polygons += frame_.polygons.size();
+    stats_.light_points += frame_.light_points.size();
+  }
+
   // Each polygon's edge setup and depth plane, once per frame: the light tests and every strip the
   // polygon touches use them. The depth plane comes from depth_source (the exact vertices when
   // `frame` is the snapped copy).
-  std::vector<CoverageSetup> coverage(frame.polygons.size());
-  std::vector<DepthPlane> depth_plane(frame.polygons.size());
-  for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
-    coverage[pi] = setup_coverage(frame.polygons[pi], lattice);
-    if (coverage[pi].empty) {
-      ++stats.polygons_empty;
-      continue;
+  void set_up_polygons(const ScreenFrame& depth_source) {
+    coverage_.resize(frame_.polygons.size());
+    depth_plane_.resize(frame_.polygons.size());
+    for (std::size_t pi = 0; pi < frame_.polygons.size(); ++pi) {
+      coverage_[pi] = setup_coverage(frame_.polygons[pi], lattice_);
+      if (coverage_[pi].empty) {
+        ++stats_.polygons_empty;
+        continue;
+      }
+      depth_plane_[pi] = &depth_source == &frame_
+                             ? fit_depth_plane(coverage_[pi], frame_.polygons[pi])
+                             : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice_), frame_.polygons[pi]);
     }
-    depth_plane[pi] = &depth_source == &frame
-                          ? fit_depth_plane(coverage[pi], frame.polygons[pi])
-                          : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice), frame.polygons[pi]);
   }
 
   // Light points are points. Under kDepth a light is visible or hidden as a whole: drawn (its
@@ -172,49 +211,43 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
   // angle lies less than half a sample above its ground point, so the sample nearest it can be
   // nearer ground and would hide it at random. The disc is a rendering of a point, so the ground
   // behind a light's lower half does not cut it. Under kPriority lights take part in the list
-  // order per sample instead (below), as in the engines.
-  std::vector<char> light_visible(frame.light_points.size(), 1);
-  for (std::size_t li = 0; li < frame.light_points.size() && visibility == Visibility::kDepth; ++li) {
-    double cx, cy, r;
-    light_geometry(frame.light_points[li], cx, cy, r);
-    const int ic = int(std::clamp(std::round(cx), 0.0, double(m - 1)));
-    const int jc = int(std::clamp(std::round(cy), 0.0, double(m - 1)));
-    // cy lies between two sample rows, which may belong to two strips: look in both bins.
-    const int strip_lo = std::min(strips - 1, int(std::clamp(std::floor(cy), 0.0, double(m - 1))) / strip_rows);
-    const int strip_hi = std::min(strips - 1, int(std::clamp(std::ceil(cy), 0.0, double(m - 1))) / strip_rows);
-    double surface = 0;  // w of the nearest polygon at (cx, cy); 0: none
-    for (std::uint32_t b = poly_bins.first[std::size_t(strip_lo)]; b < poly_bins.first[std::size_t(strip_hi) + 1]; ++b) {
-      const std::size_t pi = poly_bins.items[b];
-      if (!screen_door_passes(frame.polygons[pi].opaque, ic, jc)) continue;  // a transparent polygon's pattern at that pixel
-      const CoverageSetup& cov = coverage[pi];
-      if (cov.empty || !(cov.ymin <= cy && cy <= cov.ymax) || !cov.covers(cx, cy)) continue;
-      surface = std::max(surface, depth_plane[pi].at(cx, cy));
+  // order per sample instead (draw_lights, resolve), as in the engines.
+  void decide_light_visibility() {
+    light_visible_.assign(frame_.light_points.size(), 1);
+    if (visibility_ != Visibility::kDepth) return;
+    for (std::size_t li = 0; li < frame_.light_points.size(); ++li) {
+      double cx, cy, r;
+      light_geometry(frame_.light_points[li], cx, cy, r);
+      const int ic = int(std::clamp(std::round(cx), 0.0, double(m_ - 1)));
+      const int jc = int(std::clamp(std::round(cy), 0.0, double(m_ - 1)));
+      // cy lies between two sample rows, which may belong to two strips: look in both bins.
+      const int strip_lo = std::min(strips_ - 1, int(std::clamp(std::floor(cy), 0.0, double(m_ - 1))) / strip_rows_);
+      const int strip_hi = std::min(strips_ - 1, int(std::clamp(std::ceil(cy), 0.0, double(m_ - 1))) / strip_rows_);
+      double surface = 0;  // w of the nearest polygon at (cx, cy); 0: none
+      for (std::uint32_t b = poly_bins_.first[std::size_t(strip_lo)]; b < poly_bins_.first[std::size_t(strip_hi) + 1];
+           ++b) {
+        const std::size_t pi = poly_bins_.items[b];
+        if (!screen_door_passes(frame_.polygons[pi].opaque, ic, jc)) continue;  // the pattern at that pixel
+        const CoverageSetup& cov = coverage_[pi];
+        if (cov.empty || !(cov.ymin <= cy && cy <= cov.ymax) || !cov.covers(cx, cy)) continue;
+        surface = std::max(surface, depth_plane_[pi].at(cx, cy));
+      }
+      light_visible_[li] = 1.0 / frame_.light_points[li].zs >= surface;
     }
-    light_visible[li] = 1.0 / frame.light_points[li].zs >= surface;
   }
 
-  const std::size_t strip_samples = std::size_t(m) * std::size_t(strip_rows);
-  std::vector<double> depth(strip_samples);  // w = 1/Z; 0 = nothing drawn (infinitely far)
-  std::vector<std::int32_t> owner(strip_samples);
-  std::vector<float> intensity(strip_samples);
-  std::vector<std::int32_t> light(strip_samples);
-  const Fog& fog = frame.fog;
-
-  for (int strip = 0; strip < strips; ++strip) {
-    const int row0 = strip * strip_rows, row1 = row0 + strip_rows - 1;
-    std::fill(depth.begin(), depth.end(), 0.0);
-    std::fill(owner.begin(), owner.end(), -1);
-    std::fill(light.begin(), light.end(), -1);
-    for (std::uint32_t b = poly_bins.first[std::size_t(strip)]; b < poly_bins.first[std::size_t(strip) + 1]; ++b) {
-      const std::size_t pi = poly_bins.items[b];
-      const ScreenPolygon& p = frame.polygons[pi];
-      const CoverageSetup& cov = coverage[pi];
+  void draw_polygons(int strip) {
+    const int row0 = strip * strip_rows_, row1 = row0 + strip_rows_ - 1;
+    for (std::uint32_t b = poly_bins_.first[std::size_t(strip)]; b < poly_bins_.first[std::size_t(strip) + 1]; ++b) {
+      const std::size_t pi = poly_bins_.items[b];
+      const ScreenPolygon& p = frame_.polygons[pi];
+      const CoverageSetup& cov = coverage_[pi];
       if (cov.empty) continue;
-      const DepthPlane& dp = depth_plane[pi];
+      const DepthPlane& dp = depth_plane_[pi];
       double il = 0, slope = 0, xl = 0;  // intensity along the current row: il + slope*(x - xl)
       const std::int32_t id = std::int32_t(pi);
       for_each_covered_sample(
-          cov, m, row0, row1,
+          cov, m_, row0, row1,
           [&](int j, const RowSpan& s) {
             il = edge_intensity(cov, p, s.el, double(j), s.xl);
             const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
@@ -223,74 +256,84 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
           },
           [&](int i, int j) {
             if (!screen_door_passes(p.opaque, i, j)) return;
-            ++stats.samples_covered;
-            const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
+            ++stats_.samples_covered;
+            const std::size_t idx = std::size_t(j - row0) * std::size_t(m_) + std::size_t(i);
             const double w = dp.at(double(i), double(j));
             // Polygons come in list order, so under kPriority the first to cover a sample keeps it.
-            if (visibility == Visibility::kPriority ? owner[idx] < 0 : w > depth[idx]) {
-              depth[idx] = w;
-              owner[idx] = id;
-              intensity[idx] = float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0));
-              ++stats.samples_written;
+            if (visibility_ == Visibility::kPriority ? owner_[idx] < 0 : w > depth_[idx]) {
+              depth_[idx] = w;
+              owner_[idx] = id;
+              intensity_[idx] = float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0));
+              ++stats_.samples_written;
             }
           });
     }
+  }
 
-    // Visible light points over the polygons; a sample keeps the nearest light (ties: the later one).
-    for (std::uint32_t b = light_bins.first[std::size_t(strip)]; b < light_bins.first[std::size_t(strip) + 1]; ++b) {
-      const std::size_t li = light_bins.items[b];
-      if (!light_visible[li]) continue;
-      const ScreenLightPoint& l = frame.light_points[li];
+  // Visible light points over the polygons; a sample keeps the nearest light (ties: the later one).
+  void draw_lights(int strip) {
+    const int row0 = strip * strip_rows_, row1 = row0 + strip_rows_ - 1;
+    for (std::uint32_t b = light_bins_.first[std::size_t(strip)]; b < light_bins_.first[std::size_t(strip) + 1]; ++b) {
+      const std::size_t li = light_bins_.items[b];
+      if (!light_visible_[li]) continue;
+      const ScreenLightPoint& l = frame_.light_points[li];
       double cx, cy, r;
       light_geometry(l, cx, cy, r);
       const double wl = 1.0 / l.zs;
       const int j0 = int(std::max(double(row0), std::ceil(cy - r)));
       const int j1 = int(std::min(double(row1), std::floor(cy + r)));
       const int i0 = int(std::max(0.0, std::ceil(cx - r)));
-      const int i1 = int(std::min(double(m - 1), std::floor(cx + r)));
+      const int i1 = int(std::min(double(m_ - 1), std::floor(cx + r)));
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) {
           const double dx = double(i) - cx, dy = double(j) - cy;
           if (dx * dx + dy * dy > r * r) continue;
-          const std::size_t idx = std::size_t(j - row0) * std::size_t(m) + std::size_t(i);
+          const std::size_t idx = std::size_t(j - row0) * std::size_t(m_) + std::size_t(i);
           // kDepth: the nearest light keeps the sample (ties: the later one); kPriority: the light
           // earliest in the list (ties: the earlier light), as the engines' light point units.
-          if (light[idx] >= 0 && (visibility == Visibility::kPriority
-                                      ? frame.light_points[std::size_t(light[idx])].priority <= l.priority
-                                      : wl < 1.0 / frame.light_points[std::size_t(light[idx])].zs))
+          if (light_[idx] >= 0 && (visibility_ == Visibility::kPriority
+                                       ? frame_.light_points[std::size_t(light_[idx])].priority <= l.priority
+                                       : wl < 1.0 / frame_.light_points[std::size_t(light_[idx])].zs))
             continue;
-          if (light[idx] < 0) ++stats.light_samples;
-          light[idx] = std::int32_t(li);
+          if (light_[idx] < 0) ++stats_.light_samples;
+          light_[idx] = std::int32_t(li);
         }
     }
+  }
 
-    // Resolve the strip: box filter of the 16 samples of each pixel.
-    const auto t_resolve = Clock::now();
-    for (int py = strip * strip_pixels; py < (strip + 1) * strip_pixels; ++py)
-      for (int px = 0; px < n; ++px) {
+  // The colour of one sample after fog: a light, a polygon, or the background.
+  Rgb sample_colour(std::size_t idx) const {
+    const Fog& fog = frame_.fog;
+    const std::int32_t o = owner_[idx];
+    // kPriority: a polygon earlier in the list than the light hides it at this sample.
+    const bool light_shows = light_[idx] >= 0 && (visibility_ == Visibility::kDepth || o < 0 ||
+                                                  o >= frame_.light_points[std::size_t(light_[idx])].priority);
+    if (light_shows) {
+      const ScreenLightPoint& l = frame_.light_points[std::size_t(light_[idx])];
+      const double f = fog_factor(fog, l.zs);
+      return (1 - f) * l.intensity * l.colour + f * fog.colour;
+    }
+    if (o >= 0) {
+      const double f = fog_factor(fog, 1.0 / depth_[idx]);
+      return (1 - f) * double(intensity_[idx]) * frame_.polygons[std::size_t(o)].colour + f * fog.colour;
+    }
+    return frame_.background;
+  }
+
+  // Resolve the strip: box filter of the 16 samples of each pixel.
+  void resolve(int strip, RasterImage& out) const {
+    const int row0 = strip * strip_rows_;
+    for (int py = strip * strip_pixels_; py < (strip + 1) * strip_pixels_; ++py)
+      for (int px = 0; px < n_; ++px) {
         double sum[3] = {0, 0, 0};
         std::int32_t ids[kSamplesPerPixel];
         int nid = 0;
         for (int sy = 0; sy < kSamplesPerSide; ++sy)
           for (int sx = 0; sx < kSamplesPerSide; ++sx) {
-            const std::size_t idx = std::size_t(py * kSamplesPerSide + sy - row0) * std::size_t(m) +
+            const std::size_t idx = std::size_t(py * kSamplesPerSide + sy - row0) * std::size_t(m_) +
                                     std::size_t(px * kSamplesPerSide + sx);
-            const std::int32_t o = owner[idx];
-            ids[nid++] = o;
-            Rgb c;
-            // kPriority: a polygon earlier in the list than the light hides it at this sample.
-            const bool light_shows = light[idx] >= 0 && (visibility == Visibility::kDepth || o < 0 ||
-                                                         o >= frame.light_points[std::size_t(light[idx])].priority);
-            if (light_shows) {
-              const ScreenLightPoint& l = frame.light_points[std::size_t(light[idx])];
-              const double f = fog_factor(fog, l.zs);
-              c = (1 - f) * l.intensity * l.colour + f * fog.colour;
-            } else if (o >= 0) {
-              const double f = fog_factor(fog, 1.0 / depth[idx]);
-              c = (1 - f) * double(intensity[idx]) * frame.polygons[std::size_t(o)].colour + f * fog.colour;
-            } else {
-              c = frame.background;
-            }
+            ids[nid++] = owner_[idx];
+            const Rgb c = sample_colour(idx);
             sum[0] += c.r;
             sum[1] += c.g;
             sum[2] += c.b;
@@ -298,14 +341,29 @@ RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, Re
         std::uint8_t* dst = out.image.at(px, py);
         for (int k = 0; k < 3; ++k)
           dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / kSamplesPerPixel, 0.0, 1.0) * 255.0));
-        const std::int32_t best = majority_owner(ids, nid);
-        out.ids.id[std::size_t(py) * std::size_t(n) + std::size_t(px)] = best;
+        out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)] = majority_owner(ids, nid);
       }
-    resolve_ms += ms_since(t_resolve);
   }
-  stats.resolve_ms += resolve_ms;
-  stats.raster_ms += ms_since(t0) - resolve_ms;
-  return out;
+
+  const ScreenFrame& frame_;
+  ReferenceStats& stats_;
+  const Visibility visibility_;
+  const SampleLattice lattice_;
+  const int m_, n_, strip_pixels_, strip_rows_, strips_;
+  StripBins poly_bins_, light_bins_;
+  std::vector<CoverageSetup> coverage_;
+  std::vector<DepthPlane> depth_plane_;
+  std::vector<char> light_visible_;
+  // The strip's sample buffers (reused from strip to strip).
+  std::vector<double> depth_;  // w = 1/Z; 0 = nothing drawn (infinitely far)
+  std::vector<std::int32_t> owner_;
+  std::vector<float> intensity_;
+  std::vector<std::int32_t> light_;
+};
+
+RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
+                   Visibility visibility) {
+  return ReferenceFrame(frame, depth_source, stats, visibility).render();
 }
 
 }  // namespace
