@@ -106,26 +106,259 @@ void print_pe_table(ordered_json& report) {
                 fmt(r4 >= 1e4 ? "%.3e" : "%.0f", r4).c_str(), ok ? "agree" : "DIFFER");
     rows.push_back({{"i", r.i}, {"arch", r.arch}, {"eq10", r.formula}, {"pe_count", r.parsed}, {"seed_table", r.seed_printed}, {"agree", ok}});
   }
-  std::printf("Remark: SPEC.md lists 1p9t = 87,381 and 2p8t = 21,845, but eq. 10 gives 87,382 and 21,847 (i - 1 PEs of the\n"
-              "pipeline plus (4^(n-i+1) - 1)/3 of the tree); the seed's own table prints 4 significant digits (8.738e4,\n"
-              "2.185e4), consistent with eq. 10. The digest's values are (4^9 - 1)/3 and (4^8 - 1)/3: the tree alone.\n"
-              "%s\n\n",
-              all_ok ? "eq. 10, Architecture::pe_count() and the seed's table agree for every i." : "MISMATCH: see the rows marked DIFFER.");
+  std::printf("%s (SPEC.md's 87,381 and 21,845 are the trees alone: hls/quadtree/ARCHITECTURES.md, Table 1)\n\n",
+              all_ok ? "eq. 10, Architecture::pe_count() and the seed's table agree for every i."
+                     : "MISMATCH: see the rows marked DIFFER.");
   report["n_arch"] = {{"n", 10}, {"rows", rows}, {"all_agree", all_ok}};
 }
 
 }  // namespace
 
-int ArchCommand::run() {
-  // ---- options: everything is checked before any work or output ----
+namespace {
+
+// ---- Table 2: windows per level against eq. 2-3 ----
+
+ordered_json to_json(int l, int n, const quad::LevelWindows& lw) {
+  return {{"level", l},
+          {"window_px", 1 << (n - l)},
+          {"mean", lw.mean},
+          {"mean_se", lw.mean_se},
+          {"max", lw.max},
+          {"exact_mean", lw.exact_mean},
+          {"exact_max", lw.exact_max},
+          {"area_expectation", lw.area_expectation},
+          {"conservative_expectation", lw.expectation},
+          {"bound", lw.bound},
+          {"mean_exceeds_bound", lw.mean > lw.bound},
+          {"mean_exceeds_bound_by_3se", lw.mean > lw.bound + 3 * lw.mean_se}};
+}
+
+ordered_json to_json(const quad::TestRect& r, ordered_json levels) {
+  return {{"shape", r.label()},
+          {"aspect", r.nominal_aspect},
+          {"rotation_deg", r.rotation_deg},
+          {"area_nominal", r.nominal_area},
+          {"area", r.area},
+          {"aspect_exact", r.aspect},
+          {"shape_factor", r.shape_factor(quad::kSampleAperture, quad::kSampleAperture)},
+          {"levels", std::move(levels)}};
+}
+
+struct ExceedCounts {
+  int rows = 0, mean = 0, significant = 0, exact = 0;
+};
+
+// One rectangle's rows; counts the rows whose mean exceeds eq. 2.
+ordered_json print_window_rows(const quad::WindowTable& t, int n, ExceedCounts& counts) {
+  const quad::TestRect& r = t.rect;
+  std::printf("\n-- %s, S = %g: grid rectangle %.3f px, aspect %.2f, L_shape %.3f (eq. 2's L for this shape) --\n",
+              r.label().c_str(), r.nominal_area, r.area, r.aspect,
+              r.shape_factor(quad::kSampleAperture, quad::kSampleAperture));
+  std::printf("%5s %7s %9s %7s %6s %9s %9s %9s %9s %10s\n", "level", "window", "mean", "se", "max", "exact", "E_area",
+              "E_cons", "bound", "mean/bound");
+  ordered_json levels = ordered_json::array();
+  for (int l = 1; l <= n; ++l) {
+    const quad::LevelWindows& lw = t.level[std::size_t(l)];
+    const bool over = lw.mean > lw.bound;
+    const bool significant = lw.mean > lw.bound + 3 * lw.mean_se;
+    counts.mean += over;
+    counts.significant += significant;
+    counts.exact += lw.exact_mean > lw.bound;
+    ++counts.rows;
+    std::printf("%5d %6dpx %9.3f %7.3f %6d %9.3f %9.3f %9.3f %9.3f %9.3f%s\n", l, 1 << (n - l), lw.mean, lw.mean_se,
+                lw.max, lw.exact_mean, lw.area_expectation, lw.expectation, lw.bound, lw.mean / lw.bound,
+                significant ? " !" : over ? " ~" : "");
+    levels.push_back(to_json(l, n, lw));
+  }
+  return to_json(r, std::move(levels));
+}
+
+ordered_json window_table(const ArchCommand& c, const std::vector<quad::TestRect>& rects, int workers) {
+  const auto t0 = Clock::now();
+  std::vector<quad::WindowTable> tables(rects.size());
+  parallel_for(int(rects.size()), workers, [&](int k) {
+    tables[std::size_t(k)] = quad::measure_windows(rects[std::size_t(k)], c.positions, c.seed + std::uint32_t(k));
+  });
+  const int n = c.raster_log2;
+  std::printf("== Table 2: windows per level w_i(S) against eq. 2-3, raster %d (n = %d), %d positions per rectangle ==\n",
+              1 << n, n, c.positions);
+  std::printf("bound: eq. 2 with L = %.3f, alpha = beta = 3/4 pixel; '!' mean above the bound by > 3 se, '~' within 3 se.\n"
+              "The columns, E_area, E_cons and why some rows exceed eq. 2: hls/quadtree/ARCHITECTURES.md, Table 2.\n",
+              quad::kSeedShapeFactor);
+  ordered_json jt = ordered_json::array();
+  ExceedCounts counts;
+  for (const quad::WindowTable& t : tables) jt.push_back(print_window_rows(t, n, counts));
+  std::printf("\nSummary: the measured mean exceeds eq. 2 at %d of %d (shape, S, level) rows (%d by more than 3 se); the\n"
+              "exact (ideal-test) mean at %d.\n\n",
+              counts.mean, counts.rows, counts.significant, counts.exact);
+  return {{"raster_log2", n},
+          {"positions", c.positions},
+          {"shape_factor_L", quad::kSeedShapeFactor},
+          {"alpha", quad::kSampleAperture},
+          {"rows_exceeding", counts.mean},
+          {"rows_exceeding_by_3se", counts.significant},
+          {"rows_exceeding_exact", counts.exact},
+          {"rectangles", jt},
+          {"ms", ms_since(t0)}};
+}
+
+// ---- Table 3: performance and load of the architectures (Fig. 4) ----
+
+// Every (area, architecture) pair run through the cycle model; index area * architectures + arch.
+std::vector<quad::ArchMeasurement> measure_architectures(const ArchCommand& c, const std::vector<Architecture>& archs,
+                                                         const std::vector<quad::TestRect>& rects, int workers) {
+  std::vector<std::vector<quad::AnalysisWindow>> streams(rects.size());
+  parallel_for(int(rects.size()), workers, [&](int k) {
+    streams[std::size_t(k)] = quad::rect_stream(rects[std::size_t(k)], c.stream, c.seed + 1000u + std::uint32_t(k));
+  });
+  const int na = int(archs.size());
+  std::vector<quad::ArchMeasurement> meas(rects.size() * std::size_t(na));
+  // Largest trees first, so that they do not finish last on one worker.
+  std::vector<int> order(meas.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = int(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return archs[std::size_t(a % na)].pe_count() > archs[std::size_t(b % na)].pe_count();
+  });
+  parallel_for(int(meas.size()), workers, [&](int j) {
+    const int k = order[std::size_t(j)];
+    meas[std::size_t(k)] = quad::run_architecture(archs[std::size_t(k % na)], streams[std::size_t(k / na)], c.fifo);
+  });
+  return meas;
+}
+
+struct PerformanceRow {
+  const quad::TestRect* rect;
+  const quad::ArchMeasurement* m;
+  double eq, speed, speed_eq, stall;
+  std::vector<double> w;
+};
+
+ordered_json to_json(const PerformanceRow& r) {
+  const quad::ArchMeasurement& m = *r.m;
+  const double pes = double(m.pes);
+  return {{"area_nominal", r.rect->nominal_area},
+          {"area", r.rect->area},
+          {"arch", m.arch},
+          {"n_arch", m.pes},
+          {"polygons", m.polygons},
+          {"cycles", m.cycles},
+          {"cycles_per_polygon", m.cycles_per_polygon},
+          {"cycles_per_polygon_eq", r.eq},
+          {"p", 4.0 / m.cycles_per_polygon},
+          {"p_eq", 4.0 / r.eq},
+          {"speedup", r.speed},
+          {"speedup_eq", r.speed_eq},
+          {"load_R", r.speed / pes},
+          {"load_R_eq", r.speed_eq / pes},
+          {"utilisation", m.utilisation},
+          {"busy_cycles", m.busy_cycles},
+          {"stall_cycles", m.stall_cycles},
+          {"windows_per_level", r.w},
+          {"host_s", m.seconds}};
+}
+
+// One area's rows: every architecture against the stack (meas[0] of the area).
+void print_area_rows(const quad::TestRect& rect, const std::vector<Architecture>& archs, const quad::ArchMeasurement* meas,
+                     int n, ordered_json& jrows) {
+  const quad::ArchMeasurement& st = meas[0];
+  std::vector<double> w;
+  for (long long c : st.covered) w.push_back(double(c) / st.polygons);
+  const double eq_stack = quad::analytic_cycles_per_polygon(archs[0], w);
+  std::string wtext;
+  for (std::size_t l = 1; l < w.size(); ++l) wtext += (l > 1 ? " " : "") + fmt(w[l] < 10 ? "%.2f" : "%.0f", w[l]);
+  std::printf("S = %g (grid rectangle %.3f px): measured w_1..w_%d = %s\n", rect.nominal_area, rect.area, n, wtext.c_str());
+  for (std::size_t a = 0; a < archs.size(); ++a) {
+    const quad::ArchMeasurement& m = meas[a];
+    for (std::size_t l = 0; l < m.covered.size(); ++l)
+      if (m.covered[l] != st.covered[l]) throw std::logic_error("arch: architectures disagree on the windows of the same stream");
+    PerformanceRow r{&rect, &m, quad::analytic_cycles_per_polygon(archs[a], w), 0, 0, 0, w};
+    const double pes = double(m.pes);
+    r.speed = st.cycles_per_polygon / m.cycles_per_polygon;
+    r.speed_eq = eq_stack / r.eq;
+    r.stall = m.cycles > 0 ? 100.0 * double(m.stall_cycles) / (double(m.cycles) * pes) : 0;
+    std::printf("%6g %-9s %7lld %9.2f %9.2f %7.4f %7.4f %8.2f %8.2f %8.4f %8.4f %7.4f %7.3f\n", rect.nominal_area,
+                m.arch.c_str(), m.pes, m.cycles_per_polygon, r.eq, 4.0 / m.cycles_per_polygon, 4.0 / r.eq, r.speed,
+                r.speed_eq, r.speed / pes, r.speed_eq / pes, m.utilisation, r.stall);
+    jrows.push_back(to_json(r));
+  }
+}
+
+// The seed's own idealisation, eq. 2 windows and eq. 5-9 (its Fig. 4 parameters, or this
+// project's alpha = beta = 3/4, t_p = 0): speed-up over the stack / load R per architecture.
+ordered_json seed_model_table(const std::vector<Architecture>& archs, const std::vector<quad::TestRect>& rects, int n,
+                              double alpha, double tp_over_te, const char* title) {
+  std::printf("\n-- The seed's idealisation, %s: w_i from eq. 2 (alpha = beta = %g, L = %.3f), eq. 5-6 with\n"
+              "t_p/t_e = %g (t_i = t_e (4 w_(i-1) + (t_p/t_e) w_i)), eq. 8-9: speed-up over the stack / load R --\n",
+              title, alpha, quad::kSeedShapeFactor, tp_over_te);
+  std::printf("%6s", "S");
+  for (const Architecture& a : archs) std::printf(" %15s", a.text.c_str());
+  std::printf("\n");
+  ordered_json rows = ordered_json::array();
+  for (const quad::TestRect& r : rects) {
+    const std::vector<double> w = quad::seed_model_windows(n, r.nominal_area, alpha, quad::kSeedShapeFactor);
+    const double stack = quad::analytic_cycles_per_polygon(archs[0], w, tp_over_te);
+    std::printf("%6g", r.nominal_area);
+    for (const Architecture& a : archs) {
+      const double t = quad::analytic_cycles_per_polygon(a, w, tp_over_te);
+      const double speed = stack / t;
+      std::printf(" %7.2f/%-7.3f", speed, speed / double(a.pe_count()));
+      rows.push_back({{"area", r.nominal_area},
+                      {"arch", a.text},
+                      {"p", (4 + tp_over_te) / t},
+                      {"speedup", speed},
+                      {"load_R", speed / double(a.pe_count())}});
+    }
+    std::printf("\n");
+  }
+  return ordered_json{
+      {"alpha", alpha}, {"shape_factor_L", quad::kSeedShapeFactor}, {"tp_over_te", tp_over_te}, {"rows", rows}};
+}
+
+ordered_json performance_table(const ArchCommand& c, const std::vector<Architecture>& archs,
+                               const std::vector<quad::TestRect>& rects, int workers) {
+  const auto t0 = Clock::now();
+  const int n = c.perf_log2;
+  const std::vector<quad::ArchMeasurement> meas = measure_architectures(c, archs, rects, workers);
+  std::printf("== Table 3: relative performance and load of the architectures (seed 004 Fig. 4, eq. 5-9), raster %d (n = %d) ==\n",
+              1 << n, n);
+  std::printf("Stream: %d opaque %s rectangles per area at random positions, masks off, FIFO depth %d; p = P/P_max with\n"
+              "P_max = 1/4 polygon per clock; meas: the cycle model, eq: eq. 5-8 with the measured w_i; R = eq. 9's load.\n"
+              "Timing model, columns and discussion: hls/quadtree/ARCHITECTURES.md, Table 3.\n",
+              c.stream, rects.front().label().c_str(), c.fifo);
+  std::printf("%6s %-9s %7s %9s %9s %7s %7s %8s %8s %8s %8s %7s %7s\n", "S", "arch", "N_arch", "clk/poly", "eq", "p",
+              "p eq", "speedup", "sp eq", "R", "R eq", "util", "stall%");
+  ordered_json jrows = ordered_json::array();
+  for (std::size_t k = 0; k < rects.size(); ++k) print_area_rows(rects[k], archs, &meas[k * archs.size()], n, jrows);
+  const ordered_json seed_fig4 =
+      seed_model_table(archs, rects, n, quad::kSeedFig4Aperture, quad::kSeedFig4TpOverTe, "its Fig. 4 parameters");
+  const ordered_json seed_here =
+      seed_model_table(archs, rects, n, quad::kSampleAperture, 0.0, "this project's aperture and PE timing");
+  std::printf("\n");
+  return {{"raster_log2", n},
+          {"shape", rects.front().label()},
+          {"stream", c.stream},
+          {"fifo_depth", c.fifo},
+          {"p_max_polygons_per_clock", quad::kSeedMaxPolygonsPerClock},
+          {"rows", jrows},
+          {"seed_model_fig4", seed_fig4},
+          {"seed_model_project", seed_here},
+          {"ms", ms_since(t0)}};
+}
+
+}  // namespace
+
+// Every option checked before any work or output.
+void ArchCommand::check_options() {
   if (table != "nArch" && table != "windows" && table != "performance" && table != "all")
     throw InputError("", "--table", "'" + table + "' is not one of nArch, windows, performance, all");
   if (raster != 0) {
-    int k = 0;
-    while (k <= 10 && (1 << k) != raster) ++k;
-    if (k > 10 || k < hls::kMinRasterLog2) throw InputError("", "--raster", "must be a power of two from 16 to 1024, not " + std::to_string(raster));
+    const int k = hls::raster_log2_of(raster);
+    if (k < hls::kMinRasterLog2 || k > hls::kMaxRasterLog2)
+      throw InputError("", "--raster", "must be a power of two from 16 to 1024, not " + std::to_string(raster));
     if (sub->count("--n") > 0 && k != raster_log2)
-      throw InputError("", "--raster", std::to_string(raster) + " lines is n = " + std::to_string(k) + ", but --n is " + std::to_string(raster_log2));
+      throw InputError("", "--raster",
+                       std::to_string(raster) + " lines is n = " + std::to_string(k) + ", but --n is " +
+                           std::to_string(raster_log2));
     raster_log2 = k;
   }
   auto check_n = [](int n, const char* option) {
@@ -135,12 +368,23 @@ int ArchCommand::run() {
   check_n(raster_log2, "--n");
   check_n(perf_log2, "--perf-n");
   if (positions < 1 || positions > 1000000) throw InputError("", "--positions", "must be 1..1000000");
-  if (stream < 1 || stream > hls::kMaxPolygonIds) throw InputError("", "--stream", "must be 1..65536 (polygon ids are 16 bits)");
+  if (stream < 1 || stream > hls::kMaxPolygonIds)
+    throw InputError("", "--stream", "must be 1..65536 (polygon ids are 16 bits)");
   if (fifo < 1 || fifo > 64) throw InputError("", "--fifo", "must be 1..64");
   if (threads < 0 || threads > 64) throw InputError("", "--threads", "must be 0 (cores) to 64");
   if (perf_rotation != 0 && perf_rotation != 45) throw InputError("", "--perf-rotation", "must be 0 or 45");
   if (aspects.empty()) throw InputError("", "--aspects", "needs at least one aspect ratio");
   if (areas.empty()) throw InputError("", "--areas", "needs at least one area");
+  if (!(perf_aspect >= 1)) throw InputError("", "--perf-aspect", "an aspect ratio must be a number >= 1");
+  if (!report_file.empty()) {  // fail now, not after the work (the file itself is written once, at the end)
+    const std::filesystem::path dir = std::filesystem::absolute(report_file).parent_path();
+    if (!std::filesystem::is_directory(dir))
+      throw InputError("", "--report", "directory '" + dir.string() + "' does not exist");
+  }
+}
+
+int ArchCommand::run() {
+  check_options();
   const bool want_pe = table == "nArch" || table == "all";
   const bool want_windows = table == "windows" || table == "all";
   const bool want_perf = table == "performance" || table == "all";
@@ -151,199 +395,31 @@ int ArchCommand::run() {
     for (double a : aspects)
       for (int rot : {0, 45})
         for (double s : areas) window_rects.push_back(quad::make_test_rect(raster_log2, s, a, rot, "--areas"));
-  std::vector<Architecture> arch_list;
+  std::vector<Architecture> arch_list;  // the stack first: the reference of speed-up and eq. 9
   std::vector<quad::TestRect> perf_rects;
   if (want_perf) {
     if (archs.empty()) archs = default_archs(perf_log2);
-    const Architecture stack = Architecture::parse("ns", perf_log2, "--archs");
-    arch_list.push_back(stack);  // the reference of speed-up and eq. 9
+    arch_list.push_back(Architecture::parse("ns", perf_log2, "--archs"));
     for (const std::string& text : archs) {
       const Architecture a = Architecture::parse(text, perf_log2, "--archs");
       bool seen = false;
       for (const Architecture& b : arch_list) seen = seen || b.text == a.text;
       if (!seen) arch_list.push_back(a);
     }
-    if (!(perf_aspect >= 1)) throw InputError("", "--perf-aspect", "an aspect ratio must be a number >= 1");
-    for (double s : areas) perf_rects.push_back(quad::make_test_rect(perf_log2, s, perf_aspect, perf_rotation, "--areas"));
+    for (double s : areas)
+      perf_rects.push_back(quad::make_test_rect(perf_log2, s, perf_aspect, perf_rotation, "--areas"));
   }
-  if (!report_file.empty()) {  // fail now, not after the work (the file itself is written once, at the end)
-    const std::filesystem::path dir = std::filesystem::absolute(report_file).parent_path();
-    if (!std::filesystem::is_directory(dir)) throw InputError("", "--report", "directory '" + dir.string() + "' does not exist");
-  }
+
   ordered_json report;
   report["command"] = "arch";
   const auto t_all = Clock::now();
-
-  // ---- Table 1: eq. 10 ----
   if (want_pe) print_pe_table(report);
-
-  // ---- Table 2: windows per level against eq. 2-3 ----
-  if (want_windows) {
-    const auto t0 = Clock::now();
-    std::vector<quad::WindowTable> tables(window_rects.size());
-    parallel_for(int(window_rects.size()), workers, [&](int k) {
-      tables[std::size_t(k)] = quad::measure_windows(window_rects[std::size_t(k)], positions, seed + std::uint32_t(k));
-    });
-    const int n = raster_log2;
-    std::printf("== Table 2: windows per level w_i(S) against eq. 2-3, raster %d (n = %d), %d positions per rectangle ==\n", 1 << n, n,
-                positions);
-    std::printf("Bound: eq. 2 with L = %.3f, alpha = beta = 3/4 pixel (the 4 x 4 sample lattice: a level-i window spans\n"
-                "2^(n-i) - 1/4 pixels of samples, records.hpp) at the grid rectangle's exact area. Positions: uniform over one\n"
-                "level-1 period (N/2 x N/2 pixels, stratified), so the mean is the seed's lattice mean. mean/max: the PE's\n"
-                "conservative test (hls::evaluate_child, every edge d >= 0; pixels by their samples); exact: windows holding a\n"
-                "covered sample (an ideal overlap test); E_area: the conservative test's mean over continuous translations,\n"
-                "S/P^2 + alpha_i (W + H)/P + alpha_i^2 (P the window side, W x H the rectangle's extents) at any rotation,\n"
-                "i.e. eq. 2 with the shape's own L_shape; E_cons: its mean over the grid translations drawn here, E_area plus\n"
-                "the closed bounding-box edges' boundary hits, (2 sigma - 1)/(g P)^2 at 45 degrees and n <= 9 (arch_analysis.hpp).\n"
-                "Flags: '!' the measured MEAN exceeds the bound by more than 3 standard errors (se), '~' it exceeds it within\n"
-                "3 se (sampling noise cannot be excluded: raise --positions). w_0 = 1 always.\n",
-                quad::kSeedShapeFactor);
-    ordered_json jt = ordered_json::array();
-    int exceed_count = 0, exceed_significant = 0, exceed_exact = 0, rows = 0;
-    for (const quad::WindowTable& t : tables) {
-      const quad::TestRect& r = t.rect;
-      std::printf("\n-- %s, S = %g: grid rectangle %.3f px, aspect %.2f, L_shape %.3f (eq. 2's L for this shape) --\n", r.label().c_str(),
-                  r.nominal_area, r.area, r.aspect, r.shape_factor(quad::kSampleAperture, quad::kSampleAperture));
-      std::printf("%5s %7s %9s %7s %6s %9s %9s %9s %9s %10s\n", "level", "window", "mean", "se", "max", "exact", "E_area", "E_cons",
-                  "bound", "mean/bound");
-      ordered_json levels = ordered_json::array();
-      for (int l = 1; l <= n; ++l) {
-        const quad::LevelWindows& lw = t.level[std::size_t(l)];
-        const bool over = lw.mean > lw.bound;
-        const bool significant = lw.mean > lw.bound + 3 * lw.mean_se;
-        exceed_count += over;
-        exceed_significant += significant;
-        exceed_exact += lw.exact_mean > lw.bound;
-        ++rows;
-        std::printf("%5d %6dpx %9.3f %7.3f %6d %9.3f %9.3f %9.3f %9.3f %9.3f%s\n", l, 1 << (n - l), lw.mean, lw.mean_se, lw.max,
-                    lw.exact_mean, lw.area_expectation, lw.expectation, lw.bound, lw.mean / lw.bound,
-                    significant ? " !" : over ? " ~" : "");
-        levels.push_back({{"level", l}, {"window_px", 1 << (n - l)}, {"mean", lw.mean}, {"mean_se", lw.mean_se}, {"max", lw.max},
-                          {"exact_mean", lw.exact_mean}, {"exact_max", lw.exact_max},
-                          {"area_expectation", lw.area_expectation}, {"conservative_expectation", lw.expectation}, {"bound", lw.bound}, {"mean_exceeds_bound", over},
-                          {"mean_exceeds_bound_by_3se", significant}});
-      }
-      jt.push_back({{"shape", r.label()}, {"aspect", r.nominal_aspect}, {"rotation_deg", r.rotation_deg}, {"area_nominal", r.nominal_area},
-                    {"area", r.area}, {"aspect_exact", r.aspect}, {"shape_factor", r.shape_factor(quad::kSampleAperture, quad::kSampleAperture)},
-                    {"levels", levels}});
-    }
-    std::printf("\nSummary: the measured mean exceeds eq. 2 at %d of %d (shape, S, level) rows (%d by more than 3 se); the\n"
-                "exact (ideal-test) mean at %d.\n",
-                exceed_count, rows, exceed_significant, exceed_exact);
-    std::printf("Why: eq. 2 counts the lattice points in the polygon widened by the window (its area), so it is exact for a\n"
-                "polygon whose own shape factor L_shape equals L. The setup gives a turned rectangle a bounding-box edge on\n"
-                "each side of its box (an axis-aligned one has its own edges there), so at any rotation the PE's edge tests are\n"
-                "the separating-axis test of the rectangle and the window's sample box, an exact overlap test, whose mean over\n"
-                "continuous translations is E_area: eq. 2 with L_shape for L. Hence E_area <= bound exactly when L_shape <=\n"
-                "1.514 (among the default shapes: 1:1, 5:1 and 10:1 axis-aligned, 1:1 at 45 degrees), equality for the seed's\n"
-                "own test shape, 5:1 at 45 degrees (L_shape = 1.514), while 10:1 at 45 degrees (L_shape ~1.95) exceeds eq. 2 at\n"
-                "every level, under the ideal test too. Over the grid positions drawn here, the closed bounding-box edges of a\n"
-                "turned rectangle add E_cons - E_area < 2/(g P) windows (g grid units a pixel): the tight 5:1 rectangle's mean\n"
-                "lies that much (a few per cent at the fine levels) above eq. 2.\n\n");
-    report["windows"] = {{"raster_log2", n}, {"positions", positions}, {"shape_factor_L", quad::kSeedShapeFactor},
-                         {"alpha", quad::kSampleAperture}, {"rows_exceeding", exceed_count}, {"rows_exceeding_by_3se", exceed_significant},
-                         {"rows_exceeding_exact", exceed_exact},
-                         {"rectangles", jt}, {"ms", ms_since(t0)}};
-  }
-
-  // ---- Table 3: performance and load of the architectures (Fig. 4) ----
-  if (want_perf) {
-    const auto t0 = Clock::now();
-    const int n = perf_log2;
-    std::vector<std::vector<quad::AnalysisWindow>> streams(perf_rects.size());
-    parallel_for(int(perf_rects.size()), workers, [&](int k) {
-      streams[std::size_t(k)] = quad::rect_stream(perf_rects[std::size_t(k)], stream, seed + 1000u + std::uint32_t(k));
-    });
-    const int na = int(arch_list.size());
-    std::vector<quad::ArchMeasurement> meas(perf_rects.size() * std::size_t(na));
-    // Largest trees first, so that they do not finish last on one worker.
-    std::vector<int> order(meas.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = int(k);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return arch_list[std::size_t(a % na)].pe_count() > arch_list[std::size_t(b % na)].pe_count(); });
-    parallel_for(int(meas.size()), workers, [&](int j) {
-      const int k = order[std::size_t(j)];
-      meas[std::size_t(k)] = quad::run_architecture(arch_list[std::size_t(k % na)], streams[std::size_t(k / na)], fifo);
-    });
-    const quad::TestRect& r0 = perf_rects.front();
-    std::printf("== Table 3: relative performance and load of the architectures (seed 004 Fig. 4, eq. 5-9), raster %d (n = %d) ==\n",
-                1 << n, n);
-    std::printf("Stream: %d opaque %s rectangles per area at uniform random screen positions (set up by the setup kernel,\n"
-                "bounding-box edges included), masks off, FIFO depth %d.\n"
-                "PE timing (arch_model.hpp): t_e = 1 clock per sub-window test (all edges in parallel), t_p = 0 (parameter adders\n"
-                "in parallel), so P_max = 1/(4 t_e + t_p) = 1/4 polygon per clock and p = P/P_max = 4 / (clocks per polygon).\n"
-                "meas: quad::ArchModel clock by clock; eq: eq. 5-8 with the stream's measured w_i (t_i = 4 w_(i-1) clocks; a stack\n"
-                "stage sums its t_i, a pipeline stage has its t_i, a tree its first level's; the slowest stage sets P).\n"
-                "R = P_arch / (N_arch P_ns) (eq. 9); util = busy PE clocks / (clocks x PEs).\n",
-                stream, r0.label().c_str(), fifo);
-    std::printf("%6s %-9s %7s %9s %9s %7s %7s %8s %8s %8s %8s %7s %7s\n", "S", "arch", "N_arch", "clk/poly", "eq", "p", "p eq", "speedup",
-                "sp eq", "R", "R eq", "util", "stall%");
-    ordered_json jrows = ordered_json::array();
-    for (std::size_t k = 0; k < perf_rects.size(); ++k) {
-      const quad::ArchMeasurement& st = meas[k * std::size_t(na)];  // the stack
-      std::vector<double> w;
-      for (long long c : st.covered) w.push_back(double(c) / st.polygons);
-      const double eq_stack = quad::analytic_cycles_per_polygon(arch_list[0], w);
-      std::string wtext;
-      for (std::size_t l = 1; l < w.size(); ++l) wtext += (l > 1 ? " " : "") + fmt(w[l] < 10 ? "%.2f" : "%.0f", w[l]);
-      std::printf("S = %g (grid rectangle %.3f px): measured w_1..w_%d = %s\n", perf_rects[k].nominal_area, perf_rects[k].area, n,
-                  wtext.c_str());
-      for (int a = 0; a < na; ++a) {
-        const quad::ArchMeasurement& m = meas[k * std::size_t(na) + std::size_t(a)];
-        for (std::size_t l = 0; l < m.covered.size(); ++l)
-          if (m.covered[l] != st.covered[l]) throw std::logic_error("arch: architectures disagree on the windows of the same stream");
-        const double eq = quad::analytic_cycles_per_polygon(arch_list[std::size_t(a)], w);
-        const double pes = double(m.pes);
-        const double speed = st.cycles_per_polygon / m.cycles_per_polygon, speed_eq = eq_stack / eq;
-        const double stall = m.cycles > 0 ? 100.0 * double(m.stall_cycles) / (double(m.cycles) * pes) : 0;
-        std::printf("%6g %-9s %7lld %9.2f %9.2f %7.4f %7.4f %8.2f %8.2f %8.4f %8.4f %7.4f %7.3f\n", perf_rects[k].nominal_area,
-                    m.arch.c_str(), m.pes, m.cycles_per_polygon, eq, 4.0 / m.cycles_per_polygon, 4.0 / eq, speed, speed_eq, speed / pes,
-                    speed_eq / pes, m.utilisation, stall);
-        jrows.push_back({{"area_nominal", perf_rects[k].nominal_area}, {"area", perf_rects[k].area}, {"arch", m.arch}, {"n_arch", m.pes},
-                         {"polygons", m.polygons}, {"cycles", m.cycles}, {"cycles_per_polygon", m.cycles_per_polygon},
-                         {"cycles_per_polygon_eq", eq}, {"p", 4.0 / m.cycles_per_polygon}, {"p_eq", 4.0 / eq}, {"speedup", speed},
-                         {"speedup_eq", speed_eq}, {"load_R", speed / pes}, {"load_R_eq", speed_eq / pes}, {"utilisation", m.utilisation},
-                         {"busy_cycles", m.busy_cycles}, {"stall_cycles", m.stall_cycles}, {"windows_per_level", w}, {"host_s", m.seconds}});
-      }
-    }
-    // The seed's own idealisation, eq. 2 windows and eq. 5-9: with its Fig. 4 parameters, and with
-    // this project's (alpha = beta = 3/4, t_p = 0; the test shape's L is the seed's 1.514 for 5:1 at
-    // 45 degrees), which the cycle model matches: with the bounding-box edges the edge tests are the
-    // exact overlap test, whose mean window count is eq. 2 for that shape.
-    auto seed_model = [&](double alpha, double tp_over_te, const char* title) {
-      std::printf("\n-- The seed's idealisation, %s: w_i from eq. 2 (alpha = beta = %g, L = %.3f), eq. 5-6 with\n"
-                  "t_p/t_e = %g (t_i = t_e (4 w_(i-1) + (t_p/t_e) w_i)), eq. 8-9: speed-up over the stack / load R --\n",
-                  title, alpha, quad::kSeedShapeFactor, tp_over_te);
-      std::printf("%6s", "S");
-      for (const Architecture& a : arch_list) std::printf(" %15s", a.text.c_str());
-      std::printf("\n");
-      ordered_json rows = ordered_json::array();
-      for (const quad::TestRect& r : perf_rects) {
-        const std::vector<double> w = quad::seed_model_windows(n, r.nominal_area, alpha, quad::kSeedShapeFactor);
-        const double stack = quad::analytic_cycles_per_polygon(arch_list[0], w, tp_over_te);
-        std::printf("%6g", r.nominal_area);
-        for (const Architecture& a : arch_list) {
-          const double t = quad::analytic_cycles_per_polygon(a, w, tp_over_te);
-          const double speed = stack / t;
-          std::printf(" %7.2f/%-7.3f", speed, speed / double(a.pe_count()));
-          rows.push_back({{"area", r.nominal_area}, {"arch", a.text}, {"p", (4 + tp_over_te) / t}, {"speedup", speed},
-                          {"load_R", speed / double(a.pe_count())}});
-        }
-        std::printf("\n");
-      }
-      return ordered_json{{"alpha", alpha}, {"shape_factor_L", quad::kSeedShapeFactor}, {"tp_over_te", tp_over_te}, {"rows", rows}};
-    };
-    const ordered_json seed_fig4 = seed_model(quad::kSeedFig4Aperture, quad::kSeedFig4TpOverTe, "its Fig. 4 parameters");
-    const ordered_json seed_here = seed_model(quad::kSampleAperture, 0.0, "this project's aperture and PE timing");
-    std::printf("\n");
-    report["performance"] = {{"raster_log2", n}, {"shape", r0.label()}, {"stream", stream}, {"fifo_depth", fifo},
-                             {"p_max_polygons_per_clock", quad::kSeedMaxPolygonsPerClock}, {"rows", jrows},
-                             {"seed_model_fig4", seed_fig4}, {"seed_model_project", seed_here},
-                             {"ms", ms_since(t0)}};
-  }
+  if (want_windows) report["windows"] = window_table(*this, window_rects, workers);
+  if (want_perf) report["performance"] = performance_table(*this, arch_list, perf_rects, workers);
   report["total_ms"] = ms_since(t_all);
   if (!report_file.empty()) write_text_file(report_file, report.dump(2) + "\n");
-  std::printf("cig: arch analysis in %.1f s%s%s\n", ms_since(t_all) / 1000, report_file.empty() ? "" : ", report ", report_file.c_str());
+  std::printf("cig: arch analysis in %.1f s%s%s\n", ms_since(t_all) / 1000, report_file.empty() ? "" : ", report ",
+              report_file.c_str());
   return 0;
 }
 

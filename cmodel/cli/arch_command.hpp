@@ -23,6 +23,9 @@ struct ArchCommand {
   std::string table = "all", report_file;
   void add_to(CLI::App& app);
   int run();
+
+ private:
+  void check_options();
 };
 
 }  // namespace cig::cli

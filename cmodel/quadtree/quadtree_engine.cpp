@@ -34,7 +34,7 @@ class QuadPipeline {
 
   // The raster's level count n and the architecture for it (InputError when they do not fit).
   quad::Architecture check_raster(int n_pix) const {
-    const int log2 = int(std::lround(std::log2(n_pix)));
+    const int log2 = hls::raster_log2_of(n_pix);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2 || (1 << log2) != n_pix)
       throw InputError("", "raster", "the quadtree engine renders rasters of 16 to 1024 lines, not " + std::to_string(n_pix));
     return quad::Architecture::parse(options_.arch, log2);

@@ -124,7 +124,7 @@ class SegmentPipeline {
   EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
     using F = Front<P>;
     const int n = frame.raster;
-    const int log2 = int(std::lround(std::log2(n)));
+    const int log2 = hls::raster_log2_of(n);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2)
       throw InputError("", "raster", "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) || frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))

@@ -36,6 +36,15 @@ constexpr int kSamplesPerSide = 4;      // 4 x 4 samples per pixel
 constexpr int kSamplesPerPixel = kSamplesPerSide * kSamplesPerSide;
 constexpr int kMaxLatticeSize = kMaxLines * kSamplesPerSide;  // samples per row or column, largest raster
 
+// n of a raster of N = 2^n lines, or -1 when N is not a power of two up to 2^(kMaxRasterLog2 + 2)
+// (the C model's largest raster, 4096, included). The one place a line count becomes its log2.
+CIG_HLS_CONSTEXPR inline int raster_log2_of(int lines) {
+  int log2 = -1;
+  for (int k = 0; k <= kMaxRasterLog2 + 2; ++k)
+    if (lines == (1 << k)) log2 = k;
+  return log2;
+}
+
 // ---- Sample positions ----------------------------------------------------------------------------
 // The lattice of one raster in half units: sample k (a row or a column) at
 // H_k = k 2^log2_half_spacing + offset_half.

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 #include "cli/frame_jobs.hpp"
 #include "common/error.hpp"
 #include "cosim.hpp"
@@ -30,8 +31,7 @@ void CosimCommand::add_options(CLI::App& app) {
 int CosimCommand::run() {
   const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
   const int raster = jobs.screen_frame(0).raster;
-  int log2 = 0;
-  while ((1 << log2) < raster) ++log2;
+  const int log2 = hls::raster_log2_of(raster);
   std::string wanted = arch.empty() ? std::to_string(log2) + "p" : arch;
   const quad::Architecture a = quad::Architecture::parse(wanted, log2, "--arch");
   cosim::RtlConfig cfg{0, 0};
