@@ -20,6 +20,108 @@ ScreenVertex project(const glm::dvec3& e, double intensity, double t) {
   return v;
 }
 
+namespace {
+
+// One channel's stage-B state: the view, its pyramid, and the list being built.
+struct ChannelGeometry {
+  const ChannelView& view;
+  const ViewPyramid pyramid;
+  const double tan_half_fov;
+  const double min_ds;  // the smallest light diameter, Ds = D / 2048
+  ScreenFrame& out;
+  GeometryStats& stats;
+  std::vector<glm::dvec3> eye;  // the subobject's vertices in eye space, and their outcodes
+  std::vector<std::uint8_t> code;
+
+  // Light points first: they take priority over their own object's surfaces (a runway light over
+  // the runway) but not over nearer objects, which come earlier in the list.
+  void light_points(const Object& object, const WorldObject& wobject) {
+    stats.light_points_in += object.light_points.size();
+    for (std::size_t i = 0; i < object.light_points.size(); ++i) {
+      const glm::dvec3 e = view.to_eye(wobject.light_positions[i]);
+      if (pyramid.outcode(e)) continue;  // kept when the centre is inside the pyramid
+      const LightPoint& lp = object.light_points[i];
+      const ScreenVertex c = project(e, lp.intensity, tan_half_fov);
+      ScreenLightPoint s;
+      s.xs = c.xs;
+      s.ys = c.ys;
+      s.zs = c.zs;
+      s.ds = std::min(1.0, std::max(min_ds, lp.diameter / (tan_half_fov * e.z)));
+      s.colour = lp.colour;
+      s.intensity = lp.intensity;
+      s.priority = std::int32_t(out.polygons.size());
+      out.light_points.push_back(s);
+    }
+  }
+
+  // Back-face cull, trivial reject, clip and project one polygon; false when nothing is left.
+  bool polygon(const Polygon& poly, const WorldSubobject& w, std::uint32_t pi, ScreenPolygon& sp) {
+    // Back face: the observer is not on the front side of the polygon's plane.
+    if (glm::dot(w.face_normal[pi], view.eye) <= w.face_offset[pi]) {
+      ++stats.backfacing;
+      return false;
+    }
+    std::uint8_t all = 0xff, any = 0;
+    for (auto i : poly.indices) {
+      all &= code[i];
+      any |= code[i];
+    }
+    if (all) {
+      ++stats.outside;
+      return false;
+    }
+    ClipPolygon cp;
+    for (std::size_t k = 0; k < poly.indices.size(); ++k)
+      cp.v[cp.n++] = {eye[poly.indices[k]], w.corner_intensity[w.first_corner[pi] + k]};
+    if (any) {
+      ++stats.clipped;
+      if (!clip_polygon(cp, pyramid, any)) {
+        ++stats.outside;
+        return false;
+      }
+    }
+    sp.vertices.reserve(std::size_t(cp.n));
+    for (int k = 0; k < cp.n; ++k) sp.vertices.push_back(project(cp.v[k].eye, cp.v[k].intensity, tan_half_fov));
+    // Polygons seen exactly edge-on (or clipped to a sliver of no area) cover nothing.
+    double area2 = 0;
+    for (int k = 0; k < cp.n; ++k) {
+      const auto& a = sp.vertices[std::size_t(k)];
+      const auto& b = sp.vertices[std::size_t((k + 1) % cp.n)];
+      area2 += a.xs * b.ys - b.xs * a.ys;
+    }
+    if (!(std::abs(area2) > 1e-18)) {
+      ++stats.degenerate;
+      return false;
+    }
+    return true;
+  }
+
+  void subobject(const Subobject& sub, const WorldSubobject& w, std::uint32_t object_index, std::uint32_t si) {
+    eye.resize(w.vertices.size());
+    code.resize(w.vertices.size());
+    for (std::size_t i = 0; i < w.vertices.size(); ++i) {
+      eye[i] = view.to_eye(w.vertices[i]);
+      code[i] = pyramid.outcode(eye[i]);
+    }
+    stats.polygons_in += sub.polygons.size();
+    for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) {
+      const Polygon& poly = sub.polygons[pi];
+      ScreenPolygon sp;
+      if (!polygon(poly, w, pi, sp)) continue;
+      sp.colour = poly.colour;
+      sp.opaque = poly.opaque;
+      sp.protect = poly.protect;
+      sp.object = std::int32_t(object_index);
+      sp.subobject = std::int32_t(si);
+      sp.polygon = std::int32_t(pi);
+      stats.vertices_out += sp.vertices.size();
+      out.polygons.push_back(std::move(sp));
+    }
+  }
+};
+
+}  // namespace
+
 ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const ChannelView& view,
                             const PriorityList& list, GeometryStats& stats) {
   const auto t0 = Clock::now();
@@ -29,93 +131,19 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
   f.channel = view.channel;
   f.fog = scene.fog;
   f.background = scene.background;
-  const double t = view.tan_half_fov;
-  const ViewPyramid pyramid(t, view.near);
-
-  std::vector<glm::dvec3> eye;
-  std::vector<std::uint8_t> code;
-  const double min_ds = std::ldexp(scene.light_rendering.min_diameter_units, -hls::kGridScaleLog2);  // Ds = D / 2048
+  ChannelGeometry g{view,
+                    ViewPyramid(view.tan_half_fov, view.near),
+                    view.tan_half_fov,
+                    std::ldexp(scene.light_rendering.min_diameter_units, -hls::kGridScaleLog2),
+                    f,
+                    stats,
+                    {},
+                    {}};
   for (const PriorityEntry& entry : list.objects) {
     const Object& object = scene.objects[entry.object];
     const WorldObject& wobject = db.objects[entry.object];
-    // Light points first: they take priority over their own object's surfaces (a runway light
-    // over the runway) but not over nearer objects, which come earlier in the list.
-    stats.light_points_in += object.light_points.size();
-    for (std::size_t i = 0; i < object.light_points.size(); ++i) {
-      const glm::dvec3 e = view.to_eye(wobject.light_positions[i]);
-      if (pyramid.outcode(e)) continue;  // kept when the centre is inside the pyramid
-      const LightPoint& lp = object.light_points[i];
-      const ScreenVertex c = project(e, lp.intensity, t);
-      ScreenLightPoint s;
-      s.xs = c.xs;
-      s.ys = c.ys;
-      s.zs = c.zs;
-      s.ds = std::min(1.0, std::max(min_ds, lp.diameter / (t * e.z)));
-      s.colour = lp.colour;
-      s.intensity = lp.intensity;
-      s.priority = std::int32_t(f.polygons.size());
-      f.light_points.push_back(s);
-    }
-    for (std::uint32_t si : entry.subobjects) {
-      const Subobject& sub = object.subobjects[si];
-      const WorldSubobject& w = wobject.subobjects[si];
-      eye.resize(w.vertices.size());
-      code.resize(w.vertices.size());
-      for (std::size_t i = 0; i < w.vertices.size(); ++i) {
-        eye[i] = view.to_eye(w.vertices[i]);
-        code[i] = pyramid.outcode(eye[i]);
-      }
-      stats.polygons_in += sub.polygons.size();
-      for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) {
-        const Polygon& poly = sub.polygons[pi];
-        // Back face: the observer is not on the front side of the polygon's plane.
-        if (glm::dot(w.face_normal[pi], view.eye) <= w.face_offset[pi]) {
-          ++stats.backfacing;
-          continue;
-        }
-        std::uint8_t all = 0xff, any = 0;
-        for (auto i : poly.indices) {
-          all &= code[i];
-          any |= code[i];
-        }
-        if (all) {
-          ++stats.outside;
-          continue;
-        }
-        ClipPolygon cp;
-        for (std::size_t k = 0; k < poly.indices.size(); ++k)
-          cp.v[cp.n++] = {eye[poly.indices[k]], w.corner_intensity[w.first_corner[pi] + k]};
-        if (any) {
-          ++stats.clipped;
-          if (!clip_polygon(cp, pyramid, any)) {
-            ++stats.outside;
-            continue;
-          }
-        }
-        ScreenPolygon sp;
-        sp.vertices.reserve(std::size_t(cp.n));
-        for (int k = 0; k < cp.n; ++k) sp.vertices.push_back(project(cp.v[k].eye, cp.v[k].intensity, t));
-        // Polygons seen exactly edge-on (or clipped to a sliver of no area) cover nothing.
-        double area2 = 0;
-        for (int k = 0; k < cp.n; ++k) {
-          const auto& a = sp.vertices[std::size_t(k)];
-          const auto& b = sp.vertices[std::size_t((k + 1) % cp.n)];
-          area2 += a.xs * b.ys - b.xs * a.ys;
-        }
-        if (!(std::abs(area2) > 1e-18)) {
-          ++stats.degenerate;
-          continue;
-        }
-        sp.colour = poly.colour;
-        sp.opaque = poly.opaque;
-        sp.protect = poly.protect;
-        sp.object = std::int32_t(entry.object);
-        sp.subobject = std::int32_t(si);
-        sp.polygon = std::int32_t(pi);
-        stats.vertices_out += sp.vertices.size();
-        f.polygons.push_back(std::move(sp));
-      }
-    }
+    g.light_points(object, wobject);
+    for (std::uint32_t si : entry.subobjects) g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
   }
   stats.polygons_out += f.polygons.size();
   stats.light_points_out += f.light_points.size();
