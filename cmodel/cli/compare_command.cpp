@@ -41,21 +41,18 @@ void print_row(const Comparison& r) {
 
 }  // namespace
 
-int CompareCommand::run() {
-  EngineOptions eo = engine.options();
-  const EngineOptions ro = reference_options(reference);
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
-  if (jobs.size() > 0) make_engine(engine.engine, eo)->check_raster(jobs.screen_frame(0).raster);
-  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+namespace {
 
+// Renders every image with the engine and the reference on all cores; one Comparison per image.
+std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jobs, const EngineOptions& eo,
+                                    const EngineOptions& ro, bool classify) {
   std::vector<Comparison> rows(jobs.size());
-  const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
   std::mutex mutex;
   auto worker = [&] {
     try {
-      auto eng = make_engine(engine.engine, eo);
+      auto eng = make_engine(c.engine.engine, eo);
       auto ref = make_engine("float", ro);
       // The same reference with visibility by priority, to attribute the error that comes from
       // the engines' visibility by list order (only for a z-buffered reference).
@@ -67,10 +64,12 @@ int CompareCommand::run() {
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
-        if (classify && rows[k].error.sum_squared > 0) attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
-        if (!out_dir.empty())
-          write_png((std::filesystem::path(out_dir) / (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) +
-                                                       "_diff.png")).string(),
+        if (classify && rows[k].error.sum_squared > 0)
+          attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
+        if (!c.out_dir.empty())
+          write_png((std::filesystem::path(c.out_dir) /
+                     (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) + "_diff.png"))
+                        .string(),
                     difference_image(got.out.image, want.out.image, 8));
         if (jobs.size() > 3) {
           std::lock_guard<std::mutex> lock(mutex);
@@ -89,6 +88,59 @@ int CompareCommand::run() {
   for (auto& t : pool) t.join();
   if (jobs.size() > 3) std::cerr << "\n";
   if (error) std::rethrow_exception(error);
+  return rows;
+}
+
+// The squared error in three parts: pixels showing another polygon; pixels showing the same
+// polygon whose colour the reference changes under visibility by priority (light points and
+// minority samples ordered against the z-buffer); the rest.
+void print_totals(const ComparisonTotals& totals, std::size_t images, bool classify, double& ids_share,
+                  double& priority_share) {
+  const ImageError& all = totals.all;
+  std::cout << "all:  " << images << " image(s), PSNR " << std::fixed << std::setprecision(2) << all.psnr()
+            << " dB over all pixels, lowest " << totals.min_psnr << " dB (frame " << totals.worst_frame << " channel "
+            << totals.worst_channel << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B "
+            << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
+            << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
+            << "      of those, " << totals.priority.ids_priority_vs_depth
+            << " where the reference itself shows another polygon with visibility by priority order instead of"
+               " the z-buffer (priority order against the z-buffer)\n";
+  auto share = [&](double part) { return all.sum_squared > 0 ? 100.0 * part / all.sum_squared : 0.0; };
+  ids_share = share(all.sum_squared_ids_differ);
+  priority_share = share(totals.priority.sum_squared_priority_colour);
+  std::cout << "      error attribution: " << std::setprecision(1) << ids_share << " % of the squared error lies in the "
+            << all.pixels_ids_differ << " pixels whose visible polygon differs (visibility, coverage), ";
+  if (classify)
+    std::cout << priority_share << " % in the " << totals.priority.pixels_priority_colour
+              << " pixels showing the same polygon whose colour visibility by priority order changes in the reference"
+                 " (light points, partly covered pixels), ";
+  std::cout << 100.0 - ids_share - (classify ? priority_share : 0.0)
+            << " % in the other pixels (shading, fog, quantization)\n";
+}
+
+nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share, double priority_share) {
+  const ImageError& all = totals.all;
+  return {{"psnr_all", all.psnr()},
+          {"psnr_min", totals.min_psnr},
+          {"pixels", all.pixels},
+          {"pixels_over_2lsb", all.pixels_over_2lsb},
+          {"ids_differ", totals.ids_differ},
+          {"ids_priority_vs_depth", totals.priority.ids_priority_vs_depth},
+          {"pixels_priority_colour", totals.priority.pixels_priority_colour},
+          {"squared_error_share_ids_differ", ids_share / 100.0},
+          {"squared_error_share_priority_colour", priority_share / 100.0}};
+}
+
+}  // namespace
+
+int CompareCommand::run() {
+  const EngineOptions eo = engine.options();
+  const EngineOptions ro = reference_options(reference);
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
+  if (jobs.size() > 0) make_engine(engine.engine, eo)->check_raster(jobs.screen_frame(0).raster);
+  if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
+  const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference
+  const std::vector<Comparison> rows = compare_all(*this, jobs, eo, ro, classify);
 
   std::cout << "engine " << engine.engine << " against " << reference << " on " << input << "\n"
             << " frame  ch     PSNR  maxR maxG maxB  >2 LSB  ids differ\n";
@@ -103,38 +155,9 @@ int CompareCommand::run() {
     totals.add(r);
     rep["rows"].push_back(comparison_json(r));
   }
-  const ImageError& all = totals.all;
-  std::cout << "all:  " << rows.size() << " image(s), PSNR " << std::fixed << std::setprecision(2) << all.psnr()
-            << " dB over all pixels, lowest " << totals.min_psnr << " dB (frame " << totals.worst_frame << " channel "
-            << totals.worst_channel << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B "
-            << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
-            << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
-            << "      of those, " << totals.priority.ids_priority_vs_depth
-            << " where the reference itself shows another polygon with visibility by priority order instead of"
-               " the z-buffer (priority order against the z-buffer)\n";
-  // The squared error in three parts: pixels showing another polygon; pixels showing the same
-  // polygon whose colour the reference changes under visibility by priority (light points and
-  // minority samples ordered against the z-buffer); the rest.
-  auto share = [&](double part) { return all.sum_squared > 0 ? 100.0 * part / all.sum_squared : 0.0; };
-  const double ids_share = share(all.sum_squared_ids_differ);
-  const double priority_share = share(totals.priority.sum_squared_priority_colour);
-  std::cout << "      error attribution: " << std::setprecision(1) << ids_share << " % of the squared error lies in the "
-            << all.pixels_ids_differ << " pixels whose visible polygon differs (visibility, coverage), ";
-  if (classify)
-    std::cout << priority_share << " % in the " << totals.priority.pixels_priority_colour
-              << " pixels showing the same polygon whose colour visibility by priority order changes in the reference"
-                 " (light points, partly covered pixels), ";
-  std::cout << 100.0 - ids_share - (classify ? priority_share : 0.0)
-            << " % in the other pixels (shading, fog, quantization)\n";
-  rep["psnr_all"] = all.psnr();
-  rep["psnr_min"] = totals.min_psnr;
-  rep["pixels"] = all.pixels;
-  rep["pixels_over_2lsb"] = all.pixels_over_2lsb;
-  rep["ids_differ"] = totals.ids_differ;
-  rep["ids_priority_vs_depth"] = totals.priority.ids_priority_vs_depth;
-  rep["pixels_priority_colour"] = totals.priority.pixels_priority_colour;
-  rep["squared_error_share_ids_differ"] = ids_share / 100.0;
-  rep["squared_error_share_priority_colour"] = priority_share / 100.0;
+  double ids_share = 0, priority_share = 0;
+  print_totals(totals, rows.size(), classify, ids_share, priority_share);
+  rep.update(to_json(totals, ids_share, priority_share));
   if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
   return 0;
 }
