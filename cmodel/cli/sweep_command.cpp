@@ -72,35 +72,28 @@ struct SweepRow {
 
 }  // namespace
 
-int SweepCommand::run() {
-  // Everything that can be wrong is checked before any work.
-  const EngineOptions base = engine.options();
-  const Varied varied = parse_vary(vary);
-  if (base.params.count(varied.key))
-    throw InputError("", "--vary", "'" + varied.key + "' is also set by --engine-opt (or a shorthand)");
+namespace {
+
+// One engine per value of the varied option, each checked against the raster before any work.
+std::vector<std::unique_ptr<RasterEngine>> make_engines(const SweepCommand& c, const EngineOptions& base,
+                                                        const Varied& varied, const FrameJobs& jobs) {
   std::vector<std::unique_ptr<RasterEngine>> engines;
   for (const auto& value : varied.values) {
     EngineOptions o = base;
     o.params[varied.key] = value;
     try {
-      engines.push_back(make_engine(engine.engine, o));
+      engines.push_back(make_engine(c.engine.engine, o));
+      if (jobs.size() > 0) engines.back()->check_raster(jobs.screen_frame(0).raster);
     } catch (const InputError& e) {
       throw InputError("", "--vary", varied.key + "=" + value + ": " + e.rule());
     }
   }
-  const EngineOptions ro = reference_options(reference);
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
-  // Every engine's options against the raster before any work (e.g. an architecture of another n).
-  if (jobs.size() > 0)
-    for (std::size_t v = 0; v < engines.size(); ++v) {
-      try {
-        engines[v]->check_raster(jobs.screen_frame(0).raster);
-      } catch (const InputError& e) {
-        throw InputError("", "--vary", varied.key + "=" + varied.values[v] + ": " + e.rule());
-      }
-    }
+  return engines;
+}
 
-  // Image by image: the reference once, then every value R times (timed: the render call alone).
+// Image by image: the reference once, then every value R times (timed: the render call alone).
+std::vector<SweepRow> measure(const FrameJobs& jobs, const Varied& varied, const EngineOptions& ro,
+                              std::vector<std::unique_ptr<RasterEngine>>& engines, int repeat) {
   std::vector<SweepRow> rows(varied.values.size());
   for (std::size_t v = 0; v < rows.size(); ++v) rows[v].value = varied.values[v];
   auto ref = make_engine("float", ro);
@@ -121,6 +114,34 @@ int SweepCommand::run() {
     if (jobs.size() > 1) std::cerr << "\rcig: sweep image " << k + 1 << "/" << jobs.size() << std::flush;
   }
   if (jobs.size() > 1) std::cerr << "\n";
+  return rows;
+}
+
+nlohmann::ordered_json to_json(const SweepRow& r, const FrameJobs& jobs) {
+  const ImageError& e = r.totals.all;
+  return {{"value", r.value},
+          {"ms_per_frame", r.engine_ms / jobs.frames()},
+          {"ms_per_image", r.engine_ms / double(jobs.size())},
+          {"psnr", e.psnr()},
+          {"psnr_min", r.totals.min_psnr},
+          {"max_abs", {e.max_abs[0], e.max_abs[1], e.max_abs[2]}},
+          {"pixels_over_2lsb", e.pixels_over_2lsb},
+          {"ids_differ", r.totals.ids_differ},
+          {"pixels", e.pixels}};
+}
+
+}  // namespace
+
+int SweepCommand::run() {
+  // Everything that can be wrong is checked before any work.
+  const EngineOptions base = engine.options();
+  const Varied varied = parse_vary(vary);
+  if (base.params.count(varied.key))
+    throw InputError("", "--vary", "'" + varied.key + "' is also set by --engine-opt (or a shorthand)");
+  const EngineOptions ro = reference_options(reference);
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
+  std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied, jobs);
+  const std::vector<SweepRow> rows = measure(jobs, varied, ro, engines, repeat);
 
   const int width = int(std::max<std::size_t>(varied.key.size(), 6));
   std::ostringstream table;
@@ -145,19 +166,10 @@ int SweepCommand::run() {
   rep["rows"] = nlohmann::ordered_json::array();
   for (const SweepRow& r : rows) {
     const ImageError& e = r.totals.all;
-    const double ms_per_frame = r.engine_ms / jobs.frames();
     table << std::left << std::setw(width) << r.value << std::right << std::fixed << std::setprecision(2)
-          << std::setw(10) << ms_per_frame << std::setw(9) << e.psnr() << std::setw(9) << r.totals.max_abs()
-          << std::setw(9) << e.pixels_over_2lsb << std::setw(12) << r.totals.ids_differ << "\n";
-    rep["rows"].push_back({{"value", r.value},
-                           {"ms_per_frame", ms_per_frame},
-                           {"ms_per_image", r.engine_ms / double(jobs.size())},
-                           {"psnr", e.psnr()},
-                           {"psnr_min", r.totals.min_psnr},
-                           {"max_abs", {e.max_abs[0], e.max_abs[1], e.max_abs[2]}},
-                           {"pixels_over_2lsb", e.pixels_over_2lsb},
-                           {"ids_differ", r.totals.ids_differ},
-                           {"pixels", e.pixels}});
+          << std::setw(10) << r.engine_ms / jobs.frames() << std::setw(9) << e.psnr() << std::setw(9)
+          << r.totals.max_abs() << std::setw(9) << e.pixels_over_2lsb << std::setw(12) << r.totals.ids_differ << "\n";
+    rep["rows"].push_back(to_json(r, jobs));
   }
   if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
   std::cout << table.str();
