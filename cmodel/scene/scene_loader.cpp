@@ -235,6 +235,68 @@ Object read_object(const JsonNode& n, const std::string& scene_file, const Scene
   return o;
 }
 
+void read_channels(const JsonNode& root, Scene& s) {
+  JsonNode chans = root.at("channels");
+  std::size_t nc = chans.array_size();
+  if (nc < 1 || nc > 8) chans.fail("a scene has 1 to 8 channels, found " + std::to_string(nc));
+  for (std::size_t i = 0; i < nc; ++i) {
+    JsonNode c = chans[i];
+    c.allow_only({"name", "yaw", "pitch", "fov"});
+    Channel ch;
+    ch.name = c.find("name") ? c.at("name").string() : "ch" + std::to_string(i);
+    ch.yaw_deg = read_angle(c, "yaw");
+    ch.pitch_deg = c.find("pitch") ? c.at("pitch").number(-90, 90) : 0.0;
+    double fov = c.at("fov").number();
+    if (!(fov > 0)) c.at("fov").fail("field of view must be positive, is " + std::to_string(fov));
+    if (!(fov < 170)) c.at("fov").fail("field of view must be below 170 degrees, is " + std::to_string(fov));
+    ch.fov_deg = fov;
+    s.channels.push_back(ch);
+  }
+
+}
+
+// Lighting, fog and background.
+void read_environment(const JsonNode& root, Scene& s) {
+  if (auto l = root.find("lighting")) {
+    l->allow_only({"sun_direction", "sun_intensity", "ambient"});
+    s.lighting.sun_direction = read_direction(l->at("sun_direction"));
+    if (l->has("sun_intensity")) s.lighting.sun_intensity = l->at("sun_intensity").number(0, 1);
+    if (l->has("ambient")) s.lighting.ambient = l->at("ambient").number(0, 1);
+  }
+  bool has_fog = false;
+  if (auto f = root.find("fog")) {
+    f->allow_only({"colour", "start", "end"});
+    s.fog.colour = f->at("colour").colour();
+    s.fog.start = f->at("start").number(0, kMaxDistance);
+    s.fog.end = f->at("end").number(0, kMaxDistance);
+    if (!(s.fog.end > s.fog.start)) f->at("end").fail("fog end must be greater than fog start");
+    has_fog = true;
+  }
+  s.background = has_fog ? s.fog.colour : Rgb(0);
+  if (auto b = root.find("background")) s.background = b->colour();
+
+}
+
+void read_observer(const JsonNode& root, Scene& s) {
+  JsonNode obs = root.at("observer");
+  obs.allow_only({"keyframes"});
+  JsonNode kfs = obs.at("keyframes");
+  std::size_t nk = kfs.array_size();
+  if (nk == 0) kfs.fail("the observer path needs at least one keyframe");
+  for (std::size_t i = 0; i < nk; ++i) {
+    JsonNode k = kfs[i];
+    k.allow_only({"frame", "position", "heading", "pitch", "roll"});
+    Keyframe kf;
+    kf.frame = int(k.at("frame").integer(0, 10'000'000));
+    kf.pose = read_pose(k);
+    if (i == 0 && kf.frame != 0) k.at("frame").fail("the first keyframe must be at frame 0");
+    if (i > 0 && kf.frame <= s.keyframes.back().frame)
+      k.at("frame").fail("keyframe frames must be strictly increasing");
+    s.keyframes.push_back(kf);
+  }
+
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file, const SceneLimits& limits) {
@@ -263,58 +325,9 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
       s.light_rendering.min_diameter_units = v->at("light_point_min_diameter").number(0, 7);
   }
 
-  JsonNode chans = root.at("channels");
-  std::size_t nc = chans.array_size();
-  if (nc < 1 || nc > 8) chans.fail("a scene has 1 to 8 channels, found " + std::to_string(nc));
-  for (std::size_t i = 0; i < nc; ++i) {
-    JsonNode c = chans[i];
-    c.allow_only({"name", "yaw", "pitch", "fov"});
-    Channel ch;
-    ch.name = c.find("name") ? c.at("name").string() : "ch" + std::to_string(i);
-    ch.yaw_deg = read_angle(c, "yaw");
-    ch.pitch_deg = c.find("pitch") ? c.at("pitch").number(-90, 90) : 0.0;
-    double fov = c.at("fov").number();
-    if (!(fov > 0)) c.at("fov").fail("field of view must be positive, is " + std::to_string(fov));
-    if (!(fov < 170)) c.at("fov").fail("field of view must be below 170 degrees, is " + std::to_string(fov));
-    ch.fov_deg = fov;
-    s.channels.push_back(ch);
-  }
-
-  if (auto l = root.find("lighting")) {
-    l->allow_only({"sun_direction", "sun_intensity", "ambient"});
-    s.lighting.sun_direction = read_direction(l->at("sun_direction"));
-    if (l->has("sun_intensity")) s.lighting.sun_intensity = l->at("sun_intensity").number(0, 1);
-    if (l->has("ambient")) s.lighting.ambient = l->at("ambient").number(0, 1);
-  }
-  bool has_fog = false;
-  if (auto f = root.find("fog")) {
-    f->allow_only({"colour", "start", "end"});
-    s.fog.colour = f->at("colour").colour();
-    s.fog.start = f->at("start").number(0, kMaxDistance);
-    s.fog.end = f->at("end").number(0, kMaxDistance);
-    if (!(s.fog.end > s.fog.start)) f->at("end").fail("fog end must be greater than fog start");
-    has_fog = true;
-  }
-  s.background = has_fog ? s.fog.colour : Rgb(0);
-  if (auto b = root.find("background")) s.background = b->colour();
-
-  JsonNode obs = root.at("observer");
-  obs.allow_only({"keyframes"});
-  JsonNode kfs = obs.at("keyframes");
-  std::size_t nk = kfs.array_size();
-  if (nk == 0) kfs.fail("the observer path needs at least one keyframe");
-  for (std::size_t i = 0; i < nk; ++i) {
-    JsonNode k = kfs[i];
-    k.allow_only({"frame", "position", "heading", "pitch", "roll"});
-    Keyframe kf;
-    kf.frame = int(k.at("frame").integer(0, 10'000'000));
-    kf.pose = read_pose(k);
-    if (i == 0 && kf.frame != 0) k.at("frame").fail("the first keyframe must be at frame 0");
-    if (i > 0 && kf.frame <= s.keyframes.back().frame)
-      k.at("frame").fail("keyframe frames must be strictly increasing");
-    s.keyframes.push_back(kf);
-  }
-
+  read_channels(root, s);
+  read_environment(root, s);
+  read_observer(root, s);
   JsonNode objs = root.at("objects");
   std::size_t no = objs.array_size();
   for (std::size_t i = 0; i < no; ++i) s.objects.push_back(read_object(objs[i], file, limits));
