@@ -122,161 +122,190 @@ class SegmentPipeline {
   explicit SegmentPipeline(bool seed_quadrilateral) : SegmentPipeline() { seed_quadrilateral_ = seed_quadrilateral; }
 
   EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
-    using F = Front<P>;
     const int n = frame.raster;
     const int log2 = hls::raster_log2_of(n);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2)
       throw InputError("", "raster", "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) || frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons", "the segment engine takes at most 65536 polygons and 65536 light points per channel");
-    EngineRun run;
-    auto& rep = run.report;
-    rep["engine"] = engine_name;
-    rep["format"] = format_name;
-    rep["seed_quadrilateral"] = seed_quadrilateral_;
-
-    // Formatter and edge generator: polygons into the frame memory, segments counted per area code.
+    FrameStats st;
     auto t0 = Clock::now();
-    hls::frame_memory_swap(*frame_memory_);
-    const int bank = frame_memory_->write_bank;
+    format_and_count(frame, log2, st);
+    st.front_ms = ms_since(t0);
+    t0 = Clock::now();
+    generate_and_sort(frame, log2, st);
+    st.middle_ms = ms_since(t0);
+    t0 = Clock::now();
+    EngineRun run;
+    video(frame, log2, run.out, st);
+    st.video_ms = ms_since(t0);
+    run.report = report(frame, engine_name, format_name, st);
+    return run;
+  }
+
+ private:
+  using F = Front<P>;
+
+  // What one frame did, for the report.
+  struct FrameStats {
+    int bank = 0, threshold = 0;
     hls::OverloadCounts counts;
-    hls::overload_reset(counts);
-    hls::PolygonEdges<P> edges;
     long degenerate = 0, edges_stored = 0, protected_polygons = 0;
+    long light_segments_field[2] = {0, 0};
+    long light_segments = 0, polygon_segments = 0, dropped_overload = 0;
+    long dropped_by_code[hls::kAreaCodes] = {};
+    long read = 0, max_per_line = 0;
+    double front_ms = 0, middle_ms = 0, video_ms = 0;
+  };
+
+  // A light point formatted and cut into segments by the coding table (into light_out_).
+  int light_segments_of(const ScreenFrame& frame, std::size_t li, int log2) {
+    const auto fl = F::light(frame.light_points[li], std::uint16_t(li));
+    for (int c = 0; c < 3; ++c) tables_->light_colour[li][c] = fl.colour[c];
+    return F::light_segments(fl, log2, light_out_);
+  }
+
+  // Formatter and edge generator: polygons into the frame memory, segments counted per area code,
+  // and the overload threshold.
+  void format_and_count(const ScreenFrame& frame, int log2, FrameStats& st) {
+    hls::frame_memory_swap(*frame_memory_);
+    st.bank = frame_memory_->write_bank;
+    hls::overload_reset(st.counts);
+    hls::PolygonEdges<P> edges;
     for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
       const auto fp = F::polygon(frame.polygons[pi], std::uint16_t(pi));
       for (int c = 0; c < 3; ++c) tables_->polygon_colour[pi][c] = fp.colour[c];
       hls::generate_edges<P>(fp, log2, edges);
       if (!edges.valid) {
-        ++degenerate;
+        ++st.degenerate;
         continue;
       }
       if (!hls::frame_memory_write(edges, *frame_memory_)) continue;
-      hls::overload_count(edges.h, counts);
-      edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
-      protected_polygons += edges.h.protect ? 1 : 0;
+      hls::overload_count(edges.h, st.counts);
+      st.edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
+      st.protected_polygons += edges.h.protect ? 1 : 0;
     }
     // Light points are never dropped: their segments (coding table) count with the protected
     // polygons' in code 0, so that the threshold leaves room for them in both banks (SPEC D: the
     // threshold makes the frame's segments fit).
-    hls::Segment<P> light_out[hls::kMaxLightSegments];
-    auto light_segments_of = [&](std::size_t li) {
-      const auto fl = F::light(frame.light_points[li], std::uint16_t(li));
-      for (int c = 0; c < 3; ++c) tables_->light_colour[li][c] = fl.colour[c];
-      return F::light_segments(fl, log2, light_out);
-    };
-    long light_segments_field[2] = {0, 0};
     for (std::size_t li = 0; li < frame.light_points.size(); ++li) {
-      const int k = light_segments_of(li);
-      for (int s = 0; s < k; ++s) ++light_segments_field[light_out[s].line.value() & 1];
+      const int k = light_segments_of(frame, li, log2);
+      for (int s = 0; s < k; ++s) ++st.light_segments_field[light_out_[s].line.value() & 1];
     }
     for (int f = 0; f < 2; ++f)
-      counts.segments[f][0] = hls::UInt<24>(counts.segments[f][0].value() + light_segments_field[f]);
-    const int threshold = hls::overload_threshold_top(counts, hls::kSegmentBankWords);
-    const double front_ms = ms_since(t0);
+      st.counts.segments[f][0] = hls::UInt<24>(st.counts.segments[f][0].value() + st.light_segments_field[f]);
+    st.threshold = hls::overload_threshold_top(st.counts, hls::kSegmentBankWords);
+  }
 
-    // Preprocessor + segment generator + light coding table, into the Y sorter in priority order.
-    t0 = Clock::now();
-    hls::y_sorter_reset(*segment_memory_, n);
+  // Preprocessor + segment generator + light coding table, into the Y sorter in priority order.
+  void generate_and_sort(const ScreenFrame& frame, int log2, FrameStats& st) {
+    hls::y_sorter_reset(*segment_memory_, frame.raster);
     std::vector<std::size_t> light_order(frame.light_points.size());
     std::iota(light_order.begin(), light_order.end(), 0);
     std::stable_sort(light_order.begin(), light_order.end(), [&](std::size_t a, std::size_t b) {
       return frame.light_points[a].priority < frame.light_points[b].priority;
     });
     std::size_t next_light = 0;
-    long light_segments = 0, polygon_segments = 0, dropped_overload = 0;
-    long dropped_by_code[hls::kAreaCodes] = {};
     auto emit_lights_before = [&](long priority) {
-      for (; next_light < light_order.size() && frame.light_points[light_order[next_light]].priority <= priority; ++next_light) {
-        const int k = light_segments_of(light_order[next_light]);
-        for (int s = 0; s < k; ++s) hls::y_sort(light_out[s], *segment_memory_);
-        light_segments += k;
+      for (; next_light < light_order.size() && frame.light_points[light_order[next_light]].priority <= priority;
+           ++next_light) {
+        const int k = light_segments_of(frame, light_order[next_light], log2);
+        for (int s = 0; s < k; ++s) hls::y_sort(light_out_[s], *segment_memory_);
+        st.light_segments += k;
       }
     };
+    hls::PolygonEdges<P> edges;
     int addr = 0;
-    while (hls::frame_memory_read(*frame_memory_, bank, addr, edges)) {
+    while (hls::frame_memory_read(*frame_memory_, st.bank, addr, edges)) {
       emit_lights_before(long(edges.h.id.value()));
       const int code = int(edges.h.area_code.value());
-      if (code > threshold) {
-        ++dropped_overload;
-        ++dropped_by_code[code];
+      if (code > st.threshold) {
+        ++st.dropped_overload;
+        ++st.dropped_by_code[code];
         continue;
       }
       hls::Segment<P>(&out)[hls::kMaxLines] = *reinterpret_cast<hls::Segment<P>(*)[hls::kMaxLines]>(segments_.get());
       const int k = hls::generate_segments<P>(edges, log2, hls::UInt<3>(std::uint64_t(frame.channel & 7)),
                                               seed_quadrilateral_, out);
       for (int s = 0; s < k; ++s) hls::y_sort(out[s], *segment_memory_);
-      polygon_segments += k;
+      st.polygon_segments += k;
     }
     emit_lights_before(long(frame.polygons.size()));
-    const double middle_ms = ms_since(t0);
+  }
 
-    // Video channel, line by line.
-    t0 = Clock::now();
+  // Video channel, line by line.
+  void video(const ScreenFrame& frame, int log2, RasterImage& out, FrameStats& st) {
+    const int n = frame.raster;
     F::fog_table(tables_->fog, frame.fog);
     for (int c = 0; c < 3; ++c) {
       tables_->fog_colour[c] = F::level(frame.fog.colour[c]);
       tables_->background[c] = F::level(frame.background[c]);
     }
-    run.out.image = Image(n, n);
-    run.out.ids = IdBuffer(n, n);
+    out.image = Image(n, n);
+    out.ids = IdBuffer(n, n);
     hls::PixelLine pixels;
-    long read = 0, max_per_line = 0;
     for (int line = 0; line < n; ++line) {
-      read += hls::render_line(line, log2, *segment_memory_, *tables_, *line_, pixels);
-      max_per_line = std::max<long>(max_per_line, long(segment_memory_->count[line].value()));
+      st.read += hls::render_line(line, log2, *segment_memory_, *tables_, *line_, pixels);
+      st.max_per_line = std::max<long>(st.max_per_line, long(segment_memory_->count[line].value()));
       for (int px = 0; px < n; ++px) {
-        std::uint8_t* dst = run.out.image.at(px, line);
+        std::uint8_t* dst = out.image.at(px, line);
         for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(pixels.rgb[px][c].value());
-        run.out.ids.id[std::size_t(line) * std::size_t(n) + std::size_t(px)] = pixels.id[px];
+        out.ids.id[std::size_t(line) * std::size_t(n) + std::size_t(px)] = pixels.id[px];
       }
     }
-    const double video_ms = ms_since(t0);
+  }
 
+  nlohmann::ordered_json report(const ScreenFrame& frame, const char* engine_name, const char* format_name,
+                                const FrameStats& st) const {
+    nlohmann::ordered_json rep;
+    rep["engine"] = engine_name;
+    rep["format"] = format_name;
+    rep["seed_quadrilateral"] = seed_quadrilateral_;
+    const int n = frame.raster;
     const long stored = segment_memory_->used[0] + segment_memory_->used[1];
     const long lost = long(segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value());
     rep["polygons"] = frame.polygons.size();
-    rep["polygons_degenerate"] = degenerate;
-    rep["polygons_protected"] = protected_polygons;
-    rep["edges"] = edges_stored;
+    rep["polygons_degenerate"] = st.degenerate;
+    rep["polygons_protected"] = st.protected_polygons;
+    rep["edges"] = st.edges_stored;
     rep["frame_memory"] = {{"bank_words", hls::kFrameBankWords},
-                           {"words_used", frame_memory_->used[bank]},
+                           {"words_used", frame_memory_->used[st.bank]},
                            {"polygons_written", frame_memory_->polygons_written.value()},
                            {"polygons_overflowed", frame_memory_->polygons_overflowed.value()}};
     nlohmann::ordered_json per_code = nlohmann::ordered_json::array();
     for (int c = 0; c < hls::kAreaCodes; ++c)
       per_code.push_back({{"code", c},
-                          {"segments_even", counts.segments[0][c].value()},
-                          {"segments_odd", counts.segments[1][c].value()},
-                          {"polygons_dropped", dropped_by_code[c]}});
+                          {"segments_even", st.counts.segments[0][c].value()},
+                          {"segments_odd", st.counts.segments[1][c].value()},
+                          {"polygons_dropped", st.dropped_by_code[c]}});
     // per_area_code[0] counts the protected polygons' segments and the light points'.
     rep["overload"] = {{"bank_capacity", hls::kSegmentBankWords},
-                       {"threshold", threshold},
-                       {"light_segments_even", light_segments_field[0]},
-                       {"light_segments_odd", light_segments_field[1]},
-                       {"polygons_dropped", dropped_overload},
+                       {"threshold", st.threshold},
+                       {"light_segments_even", st.light_segments_field[0]},
+                       {"light_segments_odd", st.light_segments_field[1]},
+                       {"polygons_dropped", st.dropped_overload},
                        {"per_area_code", per_code}};
-    rep["segments"] = {{"polygon", polygon_segments},
-                       {"light", light_segments},
+    rep["segments"] = {{"polygon", st.polygon_segments},
+                       {"light", st.light_segments},
                        {"stored_even", segment_memory_->used[0]},
                        {"stored_odd", segment_memory_->used[1]},
                        {"dropped_memory_full", lost},
-                       {"per_line_max", max_per_line},
+                       {"per_line_max", st.max_per_line},
                        {"per_line_mean", n ? double(stored) / n : 0.0},
-                       {"read_by_video", read}};
+                       {"read_by_video", st.read}};
     rep["light_points"] = frame.light_points.size();
     // Seed timings: edge formation <= 10 us per edge, 400 ns per segment written, 200 ns read.
-    const double est_ms = (edges_stored * kEdgeFormationUs + stored * kSegmentWriteNs * 1e-3) * 1e-3;
+    const double est_ms = (st.edges_stored * kEdgeFormationUs + stored * kSegmentWriteNs * 1e-3) * 1e-3;
     rep["seed_timing"] = {{"segment_processor_ms", est_ms},
-                          {"video_read_ms", read * kSegmentReadNs * 1e-6},
+                          {"video_read_ms", st.read * kSegmentReadNs * 1e-6},
                           {"fits_40ms_frame", est_ms <= 40.0}};
-    rep["front_ms"] = front_ms;
-    rep["segments_ms"] = middle_ms;
-    rep["video_ms"] = video_ms;
-    return run;
+    rep["front_ms"] = st.front_ms;
+    rep["segments_ms"] = st.middle_ms;
+    rep["video_ms"] = st.video_ms;
+    return rep;
   }
 
- private:
+  hls::Segment<P> light_out_[hls::kMaxLightSegments];
   std::unique_ptr<hls::FrameMemory<P>> frame_memory_;
   std::unique_ptr<hls::SegmentMemory<P>> segment_memory_;
   std::unique_ptr<hls::VideoTables<P>> tables_;
