@@ -79,71 +79,7 @@ class QuadPipeline {
     pixels_.resolve(run.out.image, run.out.ids);
     const double resolve_ms = ms_since(t0);
 
-    // Report.
-    rep["polygons"] = frame.polygons.size();
-    rep["polygons_degenerate"] = fe.degenerate;
-    rep["polygons_split"] = fe.split;
-    rep["pieces"] = roots.size();
-    rep["bbox_edges"] = fe.bbox_edges;
-    rep["light_points"] = frame.light_points.size();
-    rep["light_samples"] = pixels_.light_samples();
-    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
-    for (int l = 0; l <= log2; ++l) {
-      const quad::LevelStats& ls = st.level[std::size_t(l)];
-      levels.push_back({{"level", l},
-                        {"windows_loaded", ls.loaded},
-                        {"windows_all_masked", ls.loaded_all_masked},
-                        {"children_tested", ls.tested},
-                        {"children_masked", ls.masked},
-                        {"children_covered", ls.covered},
-                        {"children_full_opaque", ls.full_opaque}});
-    }
-    rep["levels"] = levels;
-    // Pieces that met a mask and never reached the pixels: hidden, discarded at that level.
-    std::vector<long> died(std::size_t(log2) + 1, 0);
-    long hidden = 0;
-    for (const quad::PieceStats& ps : st.pieces)
-      if (ps.met_mask && ps.pixel_records == 0) {
-        ++died[std::size_t(ps.deepest_level)];
-        ++hidden;
-      }
-    rep["pieces_hidden_by_masks"] = hidden;
-    rep["pieces_hidden_by_level"] = died;
-    rep["pixel_records"] = st.pixel_records;
-    rep["samples_written"] = pixels_.samples_written();
-    rep["pixels_full"] = st.pixels_full;
-    rep["mask_sets"] = st.mask_sets;
-    rep["mask_words_full"] = st.mask_words_full;
-    const double frame_ms = double(st.cycles) / (options_.clock_mhz * 1e3);
-    long long busy = 0;
-    for (long long b : st.pe_busy_cycles) busy += b;
-    nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
-    for (std::size_t s = 0; s < arch.stages.size(); ++s) {
-      long long sb = 0, ss = 0, pes = 0;
-      for (int p = 0; p < model.pe_count(); ++p)
-        if (model.pe_stage(p) == int(s)) {
-          sb += st.pe_busy_cycles[std::size_t(p)];
-          ss += st.pe_stall_cycles[std::size_t(p)];
-          ++pes;
-        }
-      const quad::ArchStage& as = arch.stages[s];
-      per_stage.push_back({{"kind", std::string(1, as.kind)},
-                           {"levels", std::to_string(as.first_level) + ".." + std::to_string(as.last_level)},
-                           {"pes", pes},
-                           {"busy_cycles", sb},
-                           {"stall_cycles", ss},
-                           {"utilisation", st.cycles > 0 ? double(sb) / (double(st.cycles) * double(pes)) : 0.0}});
-    }
-    rep["cycles"] = {{"frame", st.cycles},
-                     {"per_piece", roots.empty() ? 0.0 : double(st.cycles) / double(roots.size())},
-                     {"clock_mhz", options_.clock_mhz},
-                     {"frame_ms", frame_ms},
-                     {"budget_ms", kFrameBudgetMs},
-                     {"fits_budget", frame_ms <= kFrameBudgetMs},
-                     {"pes", model.pe_count()},
-                     {"pe_utilisation", st.cycles > 0 ? double(busy) / (double(st.cycles) * model.pe_count()) : 0.0},
-                     {"input_wait_cycles", st.input_wait_cycles},
-                     {"stages", per_stage}};
+    report(frame, arch, model, fe, roots.size(), st, rep);
     rep["setup_ms"] = setup_ms;
     rep["lights_ms"] = lights_ms;
     rep["raster_ms"] = raster_ms;
@@ -152,6 +88,76 @@ class QuadPipeline {
   }
 
  private:
+  // What the frame did: the front end, the PEs level by level, the masks, the cycles per stage.
+  void report(const ScreenFrame& frame, const quad::Architecture& arch, const quad::ArchModel<P>& model,
+              const quad::FrontEndStats& fe, std::size_t pieces, const quad::ArchStats& st,
+              nlohmann::ordered_json& rep) const {
+  rep["polygons"] = frame.polygons.size();
+  rep["polygons_degenerate"] = fe.degenerate;
+  rep["polygons_split"] = fe.split;
+  rep["pieces"] = pieces;
+  rep["bbox_edges"] = fe.bbox_edges;
+  rep["light_points"] = frame.light_points.size();
+  rep["light_samples"] = pixels_.light_samples();
+  nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+  for (int l = 0; l <= arch.raster_log2; ++l) {
+    const quad::LevelStats& ls = st.level[std::size_t(l)];
+    levels.push_back({{"level", l},
+                      {"windows_loaded", ls.loaded},
+                      {"windows_all_masked", ls.loaded_all_masked},
+                      {"children_tested", ls.tested},
+                      {"children_masked", ls.masked},
+                      {"children_covered", ls.covered},
+                      {"children_full_opaque", ls.full_opaque}});
+  }
+  rep["levels"] = levels;
+  // Pieces that met a mask and never reached the pixels: hidden, discarded at that level.
+  std::vector<long> died(std::size_t(arch.raster_log2) + 1, 0);
+  long hidden = 0;
+  for (const quad::PieceStats& ps : st.pieces)
+    if (ps.met_mask && ps.pixel_records == 0) {
+      ++died[std::size_t(ps.deepest_level)];
+      ++hidden;
+    }
+  rep["pieces_hidden_by_masks"] = hidden;
+  rep["pieces_hidden_by_level"] = died;
+  rep["pixel_records"] = st.pixel_records;
+  rep["samples_written"] = pixels_.samples_written();
+  rep["pixels_full"] = st.pixels_full;
+  rep["mask_sets"] = st.mask_sets;
+  rep["mask_words_full"] = st.mask_words_full;
+  const double frame_ms = double(st.cycles) / (options_.clock_mhz * 1e3);
+  long long busy = 0;
+  for (long long b : st.pe_busy_cycles) busy += b;
+  nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
+  for (std::size_t s = 0; s < arch.stages.size(); ++s) {
+    long long sb = 0, ss = 0, pes = 0;
+    for (int p = 0; p < model.pe_count(); ++p)
+      if (model.pe_stage(p) == int(s)) {
+        sb += st.pe_busy_cycles[std::size_t(p)];
+        ss += st.pe_stall_cycles[std::size_t(p)];
+        ++pes;
+      }
+    const quad::ArchStage& as = arch.stages[s];
+    per_stage.push_back({{"kind", std::string(1, as.kind)},
+                         {"levels", std::to_string(as.first_level) + ".." + std::to_string(as.last_level)},
+                         {"pes", pes},
+                         {"busy_cycles", sb},
+                         {"stall_cycles", ss},
+                         {"utilisation", st.cycles > 0 ? double(sb) / (double(st.cycles) * double(pes)) : 0.0}});
+  }
+  rep["cycles"] = {{"frame", st.cycles},
+                   {"per_piece", pieces == 0 ? 0.0 : double(st.cycles) / double(pieces)},
+                   {"clock_mhz", options_.clock_mhz},
+                   {"frame_ms", frame_ms},
+                   {"budget_ms", kFrameBudgetMs},
+                   {"fits_budget", frame_ms <= kFrameBudgetMs},
+                   {"pes", model.pe_count()},
+                   {"pe_utilisation", st.cycles > 0 ? double(busy) / (double(st.cycles) * model.pe_count()) : 0.0},
+                   {"input_wait_cycles", st.input_wait_cycles},
+                   {"stages", per_stage}};
+  }
+
   QuadOptions options_;
   const char* name_;
   const char* format_;

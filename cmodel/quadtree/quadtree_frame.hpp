@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "formatter/fog_table.hpp"
 #include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
 #include "hls/formatter/formatter.hpp"
@@ -27,16 +28,44 @@
 
 namespace cig::quad {
 
+// ---- The fixed/double twin adaptation ---------------------------------------------------------
+// QuadFront<P>: what differs between the bit-accurate kernels and their double twin around the PEs
+// (the same pattern as the segment engine's Front<P>, segment_engine.cpp): the setup's input, the
+// pixel processor's fog table, a light's colour.
 template <class P>
-constexpr bool kIsTwin = std::is_same_v<P, QuadDoubleArith>;
+struct QuadFront;
 
-// The setup's input for one polygon: the formatter kernel's output; the twin keeps the formatter's
-// positions (coverage is exact) and takes the unquantized I and Z of the formatter twin.
-template <class P>
-void setup_input(const ScreenPolygon& p, std::uint16_t id, hls::QuadPrimitiveInput<P>& in) {
-  hls::FormattedPrimitive f;
-  hls::formatter_top(raw_from_polygon(p, id), f);
-  if constexpr (kIsTwin<P>) {
+template <class Fmt>
+struct QuadFront<hls::QuadFixedArith<Fmt>> {
+  using P = hls::QuadFixedArith<Fmt>;
+  // The setup's input: the formatter kernel's output.
+  static void setup_input(const ScreenPolygon& p, std::uint16_t id, hls::QuadPrimitiveInput<P>& in) {
+    hls::FormattedPrimitive f;
+    hls::formatter_top(raw_from_polygon(p, id), f);
+    hls::quad_input_from_formatted(f, in);
+  }
+  // The fixed pixel processor looks fog up by the e8m7 code of 1/Z (host fill, per frame).
+  static void fill_fog(hls::QuadPixelTables<P>& t, const Fog& fog) { fill_fog_table(t.fog, fog, true); }
+  // A light's colour at its samples: colour x I, fog by its Z (the pixel processor's arithmetic).
+  static void light_colour(const ScreenLightPoint&, const hls::FormattedPrimitive& f, const hls::QuadPixelTables<P>& t,
+                           typename P::Sample (&out)[3]) {
+    const int e = P::depth_exponent(f.v[0].z);
+    const typename P::Value w = P::inverse_depth_value(f.v[0].z, e);
+    const typename P::Param v = typename P::Param(w) << P::G;
+    const hls::FogFactor fog = P::fog_factor(t.fog, v, hls::Int<10>(P::w_exponent(e)));
+    const typename P::Intensity in(hls::UFixed<8, 8>::from_raw(f.v[0].i));
+    for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], in, fog, t.fog_colour[c]);
+  }
+};
+
+template <>
+struct QuadFront<QuadDoubleArith> {
+  using P = QuadDoubleArith;
+  // The twin keeps the formatter's positions (coverage is exact) and takes the unquantized I and Z
+  // of the formatter twin.
+  static void setup_input(const ScreenPolygon& p, std::uint16_t id, hls::QuadPrimitiveInput<P>& in) {
+    hls::FormattedPrimitive f;
+    hls::formatter_top(raw_from_polygon(p, id), f);
     const TwinPrimitive t = formatter_twin(p, id);
     in.n = f.n;
     for (int k = 0; k < hls::kMaxVertices; ++k) {
@@ -48,10 +77,18 @@ void setup_input(const ScreenPolygon& p, std::uint16_t id, hls::QuadPrimitiveInp
     for (int c = 0; c < 3; ++c) in.colour[c] = f.colour[c];
     in.opaque = f.opaque;
     in.id = f.id;
-  } else {
-    hls::quad_input_from_formatted(f, in);
   }
-}
+  static void fill_fog(hls::QuadPixelTables<P>& t, const Fog& fog) {
+    t.fog.start = fog.start;
+    t.fog.end = fog.end;
+  }
+  static void light_colour(const ScreenLightPoint& l, const hls::FormattedPrimitive& f, const hls::QuadPixelTables<P>& t,
+                           typename P::Sample (&out)[3]) {
+    const TwinPrimitive tw = formatter_twin(l, 0);
+    const double fog = P::fog_factor(t.fog, 1.0 / tw.v[0].z, hls::Int<10>(0));
+    for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], tw.v[0].i, fog, t.fog_colour[c]);
+  }
+};
 
 struct FrontEndStats {
   long degenerate = 0, split = 0, bbox_edges = 0;
@@ -65,7 +102,7 @@ std::vector<hls::QuadWindow<P>> front_end(const ScreenFrame& frame, int raster_l
   hls::QuadSetup<P> setup;
   hls::QuadPrimitiveInput<P> in;
   for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
-    setup_input<P>(frame.polygons[pi], std::uint16_t(pi), in);
+    QuadFront<P>::setup_input(frame.polygons[pi], std::uint16_t(pi), in);
     hls::quadtree_setup(in, raster_log2, setup);
     const int pieces = int(setup.pieces.value());
     if (pieces == 0) ++st.degenerate;
@@ -87,7 +124,7 @@ class PixelFrame final : public PixelSink<P> {
   void begin(const ScreenFrame& frame, int raster_log2) {
     n_ = 1 << raster_log2;
     log2_ = raster_log2;
-    fill_fog(frame.fog);
+    QuadFront<P>::fill_fog(*tables_, frame.fog);
     for (int c = 0; c < 3; ++c) {
       tables_->fog_colour[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.fog.colour[c], 0.0, 1.0) * 255)));
       tables_->background[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.background[c], 0.0, 1.0) * 255)));
@@ -143,39 +180,6 @@ class PixelFrame final : public PixelSink<P> {
     return ci >= 0 ? covers_[std::size_t(ci)] : none;
   }
 
-  // The fixed pixel processor looks fog up by the e8m7 code of 1/Z (host fill, per frame).
-  void fill_fog(const Fog& fog) {
-    if constexpr (kIsTwin<P>) {
-      tables_->fog.start = fog.start;
-      tables_->fog.end = fog.end;
-    } else {
-      for (int code = 0; code < hls::kFogTableSize; ++code) {
-        hls::ZFloat w;
-        w.bits = hls::UInt<15>(code);
-        const double z = 1.0 / zfloat_to_double(w);
-        const double f = std::clamp((z - fog.start) / (fog.end - fog.start), 0.0, 1.0);
-        tables_->fog.f[code] = hls::FogFactor(hls::UFixed<9, 1>::from_raw_value(std::uint64_t(std::lround(f * 256))));
-      }
-    }
-  }
-
-  // A light's colour at its samples: colour x I, fog by its Z (the pixel processor's arithmetic).
-  void light_colour(const ScreenLightPoint& l, const hls::FormattedPrimitive& f, typename P::Sample (&out)[3]) const {
-    const hls::QuadPixelTables<P>& t = *tables_;
-    if constexpr (kIsTwin<P>) {
-      const TwinPrimitive tw = formatter_twin(l, 0);
-      const double fog = P::fog_factor(t.fog, 1.0 / tw.v[0].z, hls::Int<10>(0));
-      for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], tw.v[0].i, fog, t.fog_colour[c]);
-    } else {
-      const int e = P::depth_exponent(f.v[0].z);
-      const typename P::Value w = P::inverse_depth_value(f.v[0].z, e);
-      const typename P::Param v = typename P::Param(w) << P::G;
-      const hls::FogFactor fog = P::fog_factor(t.fog, v, hls::Int<10>(P::w_exponent(e)));
-      const typename P::Intensity in(hls::UFixed<8, 8>::from_raw(f.v[0].i));
-      for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], in, fog, t.fog_colour[c]);
-    }
-  }
-
   // The light point unit: every light's samples (the coding table's chords, hls/pixel/light_coding.hpp:
   // the float reference's disc, verif/kernels/test_segment_arith.cpp) into per-pixel covers; a
   // sample keeps the light with the earliest priority position (ties: the earlier light).
@@ -193,7 +197,7 @@ class PixelFrame final : public PixelSink<P> {
       hls::FormattedPrimitive f;
       hls::formatter_top(raw_from_light(l, std::uint16_t(li)), f);
       typename P::Sample colour[3];
-      light_colour(l, f, colour);
+      QuadFront<P>::light_colour(l, f, *tables_, colour);
       const int k = hls::light_chords(f, log2_, chords);
       for (int s = 0; s < k; ++s) {
         const int row = chords[s].row;

@@ -15,6 +15,7 @@
 #include "hls/segment/segment_generator.hpp"
 #include "hls/segment/video_channel.hpp"
 #include "segment/double_arith.hpp"
+#include "formatter/fog_table.hpp"
 #include "formatter/formatter_twin.hpp"
 
 namespace cig {
@@ -27,7 +28,10 @@ constexpr double kEdgeFormationUs = 10.0;  // per edge, at most
 constexpr double kSegmentWriteNs = 400.0;
 constexpr double kSegmentReadNs = 200.0;
 
-// ---- Formatting: the bit-accurate formatter kernel, or its twin ---------------------------------
+// ---- The fixed/double twin adaptation -------------------------------------------------------------
+// Front<P>: what differs between the bit-accurate pipeline (the formatter kernel, the coding table,
+// the fog table) and its double twin (the formatter twin, exact chords, the fog formula). The
+// quadtree engine adapts its twin the same way (QuadFront<P>, quadtree_frame.hpp).
 
 template <class P>
 struct Front;
@@ -49,14 +53,7 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
     return hls::generate_light_segments<P>(l, log2, hls::UInt<3>(0), out);
   }
   static typename P::Level level(double unit) { return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255))); }
-  static void fog_table(typename P::FogTable& t, const Fog& fog) {
-    for (int code = 0; code < (1 << 15); ++code) {
-      hls::ZFloat z;
-      z.bits = hls::UInt<15>(code);
-      const double f = std::clamp((zfloat_to_double(z) - fog.start) / (fog.end - fog.start), 0.0, 1.0);
-      t.f[code] = typename P::FogFactor(hls::UFixed<9, 1>::from_raw_value(std::uint64_t(std::lround(f * 256))));
-    }
-  }
+  static void fog_table(typename P::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, false); }
 };
 
 template <>
