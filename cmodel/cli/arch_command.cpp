@@ -376,11 +376,7 @@ void ArchCommand::check_options() {
   if (aspects.empty()) throw InputError("", "--aspects", "needs at least one aspect ratio");
   if (areas.empty()) throw InputError("", "--areas", "needs at least one area");
   if (!(perf_aspect >= 1)) throw InputError("", "--perf-aspect", "an aspect ratio must be a number >= 1");
-  if (!report_file.empty()) {  // fail now, not after the work (the file itself is written once, at the end)
-    const std::filesystem::path dir = std::filesystem::absolute(report_file).parent_path();
-    if (!std::filesystem::is_directory(dir))
-      throw InputError("", "--report", "directory '" + dir.string() + "' does not exist");
-  }
+  if (!report_file.empty()) check_output_file(report_file, "--report");  // now, not after the work
 }
 
 int ArchCommand::run() {
@@ -417,7 +413,7 @@ int ArchCommand::run() {
   if (want_windows) report["windows"] = window_table(*this, window_rects, workers);
   if (want_perf) report["performance"] = performance_table(*this, arch_list, perf_rects, workers);
   report["total_ms"] = ms_since(t_all);
-  if (!report_file.empty()) write_text_file(report_file, report.dump(2) + "\n");
+  if (!report_file.empty()) write_text_file(report_file, report_text(report));
   std::printf("cig: arch analysis in %.1f s%s%s\n", ms_since(t_all) / 1000, report_file.empty() ? "" : ", report ",
               report_file.c_str());
   return 0;

@@ -9,12 +9,19 @@
 
 #include <CLI/CLI.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include "common/error.hpp"
 #include "common/timing.hpp"
 #include "engine/engine.hpp"
 #include "registry/engine_registry.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace cig::cli {
+
+// A scene has 1 to 8 channels (scene_loader.cpp): --channel takes 0..7 (range-checked by CLI11).
+constexpr int kMaxChannelIndex = 7;
 
 // --engine, --engine-opt, --snap and the quadtree shorthands --arch, --masks.
 struct EngineArgs {
@@ -23,12 +30,14 @@ struct EngineArgs {
   bool snap = false;
   std::string arch, masks;  // shorthands for --engine-opt arch=... / masks=...
 
-  void add_to(CLI::App* app) {
-    app->add_option("--engine", engine, "raster engine (" + [] {
+  // `required`: the command compares an engine with the reference, so it must be named.
+  void add_to(CLI::App* app, bool required = false) {
+    auto* option = app->add_option("--engine", engine, "raster engine (" + [] {
       std::string s;
       for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
       return s;
     }() + ")");
+    if (required) option->required();
     app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
     app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
     app->add_option("--arch", arch, "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
@@ -48,6 +57,16 @@ struct EngineArgs {
     make_engine(engine, o);  // validates the name and the options before any work
     return o;
   }
+};
+
+// --max-model-mb: the largest OBJ model a scene may reference (scenes/README.md, "Valid ranges").
+struct ModelLimitArgs {
+  int max_model_mb = int(kDefaultMaxModelBytes >> 20);
+  void add_to(CLI::App* app) {
+    app->add_option("--max-model-mb", max_model_mb, "largest OBJ model file read, in MiB (default 64)")
+        ->check(CLI::Range(1, 4096));
+  }
+  SceneLimits limits() const { return SceneLimits{(long long)max_model_mb << 20}; }
 };
 
 // "A:B" (inclusive) or "K".
@@ -82,6 +101,20 @@ inline std::string safe_name(const std::string& s) {
   for (char c : s) r += (std::isalnum((unsigned char)c) || c == '-' || c == '_') ? c : '_';
   return r;
 }
+
+// An output file named by `option`: checked before any work (it is not a folder, it can be written,
+// its folder exists or can be created: the writers create it), so that no run ends in an
+// unwritable path after the work is done.
+void check_output_file(const std::string& file, const char* option);
+// An output folder: it exists and is writable, or can be created.
+void check_output_dir(const std::string& dir, const char* option);
+// A JSON report as text: strings that are not UTF-8 (paths) are written with U+FFFD in place of
+// their invalid bytes instead of failing after the work is done.
+std::string report_text(const nlohmann::ordered_json& report);
+
+// Whether some frame of the scene could hold more polygons or lights than a polygon id counts
+// (hls::kMaxPolygonIds): only then must the frames go through stages A and B to be checked.
+bool scene_exceeds_ids(const Scene& scene);
 
 // The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.
 inline void frame_range(const std::string& frames_text, int frame_k, bool frame_given, int frame_count,

@@ -23,11 +23,12 @@ void CompareCommand::add_to(CLI::App& app) {
   sub->add_option("input", input, "scene or polygon list")->required();
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
-  sub->add_option("--channel", channel, "only this channel (scenes)");
+  sub->add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
   sub->add_option("--reference", reference, "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   sub->add_option("--out", out_dir, "write difference images (|error| x 8) here");
   sub->add_option("--report", report_file, "write a JSON report");
-  engine.add_to(sub);
+  engine.add_to(sub, true);
+  model_limit.add_to(sub);
 }
 
 namespace {
@@ -136,8 +137,11 @@ nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share,
 int CompareCommand::run() {
   const EngineOptions eo = engine.options();
   const EngineOptions ro = reference_options(reference);
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   if (jobs.size() > 0) make_engine(engine.engine, eo)->check_raster(jobs.screen_frame(0).raster);
+  jobs.check_capacity(*make_engine(engine.engine, eo));
+  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
+  if (!report_file.empty()) check_output_file(report_file, "--report");
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference
   const std::vector<Comparison> rows = compare_all(*this, jobs, eo, ro, classify);
@@ -158,7 +162,7 @@ int CompareCommand::run() {
   double ids_share = 0, priority_share = 0;
   print_totals(totals, rows.size(), classify, ids_share, priority_share);
   rep.update(to_json(totals, ids_share, priority_share));
-  if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
+  if (!report_file.empty()) write_text_file(report_file, report_text(rep));
   return 0;
 }
 

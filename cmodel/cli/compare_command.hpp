@@ -16,6 +16,7 @@ struct CompareCommand {
   int frame_k = -1, channel = -1;
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;
+  ModelLimitArgs model_limit;
   void add_to(CLI::App& app);
   int run();
 };

@@ -22,15 +22,19 @@ EngineOptions reference_options(const std::string& reference) {
 }
 
 FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
-                          int channel) {
+                          int channel, const SceneLimits& limits) {
   FrameJobs j;
   const std::string text = read_text_file(input);
   if (input_kind(text, input) == InputKind::kPolygonList) {
+    // --frame, --frames and --channel choose images of a scene; a polygon list is one image.
+    if (frame_given || !frames_text.empty() || channel >= 0)
+      throw InputError(input, "", std::string(frame_given ? "--frame" : !frames_text.empty() ? "--frames" : "--channel") +
+                                      " applies to a scene; this input is a polygon list (one image)");
     j.list_.push_back(parse_polygon_list(text, input));
     j.jobs_.push_back({j.list_[0].frame, j.list_[0].channel});
     return j;
   }
-  j.scene_ = std::make_unique<Scene>(parse_scene(text, input));
+  j.scene_ = std::make_unique<Scene>(parse_scene(text, input, limits));
   int a, b;
   frame_range(frames_text, frame_k, frame_given, j.scene_->frame_count(), input, a, b);
   if (channel >= int(j.scene_->channels.size()))
@@ -48,6 +52,14 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
   if (!pipeline_) return list_[0];
   nlohmann::ordered_json unused;
   return pipeline_->geometry(jobs_[k].first, jobs_[k].second, unused);
+}
+
+void FrameJobs::check_capacity(const RasterEngine& engine) const {
+  if (scene_ && !scene_exceeds_ids(*scene_)) {
+    if (!jobs_.empty()) engine.check_raster(scene_->raster);
+    return;
+  }
+  for (std::size_t k = 0; k < jobs_.size(); ++k) engine.check_frame(screen_frame(k));
 }
 
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {

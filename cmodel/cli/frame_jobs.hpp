@@ -14,6 +14,7 @@
 #include "engine/engine.hpp"
 #include "image/image_compare.hpp"
 #include "pipeline/scene_pipeline.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace cig::cli {
 
@@ -25,7 +26,7 @@ EngineOptions reference_options(const std::string& reference);
 class FrameJobs {
  public:
   static FrameJobs load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
-                        int channel);
+                        int channel, const SceneLimits& limits = {});
   std::size_t size() const { return jobs_.size(); }
   int frame(std::size_t k) const { return jobs_[k].first; }
   int channel(std::size_t k) const { return jobs_[k].second; }
@@ -33,6 +34,9 @@ class FrameJobs {
   int channels() const { return channels_; }  // channels per frame
   // The polygon list the engines receive for image k (stages A and B for a scene; thread-safe).
   ScreenFrame screen_frame(std::size_t k) const;
+  // Every image against the engine's capacities before any work (RasterEngine::check_frame). A
+  // scene whose polygons and lights all fit is not run through stages A and B for it.
+  void check_capacity(const RasterEngine& engine) const;
 
  private:
   std::vector<ScreenFrame> list_;  // polygon-list input

@@ -58,6 +58,17 @@ int run(int argc, char** argv) {
                      "`cig cosim --help` for its options)")
       ->allow_extras();
 
+  // A first word that names no command is answered with the commands, not with CLI11's "A
+  // subcommand is required".
+  if (argc >= 2 && argv[1][0] != '-') {
+    try {
+      app.get_subcommand(std::string(argv[1]));
+    } catch (const CLI::OptionNotFound&) {
+      std::string names;
+      for (const CLI::App* c : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + c->get_name();
+      throw InputError("", "", "unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")");
+    }
+  }
   int status = 0;
   if (!cli::parse_command_line(app, argc, argv, status)) return status;
   if (*render.sub) return render.run();

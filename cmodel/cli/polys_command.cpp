@@ -14,17 +14,19 @@ void PolysCommand::add_to(CLI::App& app) {
   sub = app.add_subcommand("polys", "write the geometric processor's polygon list for one channel");
   sub->add_option("scene", scene_file, "scene file")->required();
   sub->add_option("--frame", frame, "frame number")->required();
-  sub->add_option("--channel", channel, "channel")->required();
+  sub->add_option("--channel", channel, "channel")->check(CLI::Range(0, kMaxChannelIndex))->required();
   sub->add_option("--out", out_file, "output polygon list (JSON)")->required();
+  model_limit.add_to(sub);
 }
 
 int PolysCommand::run() {
-  const Scene scene = load_scene(scene_file);
+  const Scene scene = load_scene(scene_file, model_limit.limits());
   if (frame < 0 || frame >= scene.frame_count())
     throw InputError("", "--frame", "frame " + std::to_string(frame) + " lies outside the observer path (0.." +
                                         std::to_string(scene.frame_count() - 1) + ")");
   if (channel < 0 || channel >= int(scene.channels.size()))
     throw InputError("", "--channel", "channel " + std::to_string(channel) + " does not exist");
+  check_output_file(out_file, "--out");
   const ScenePipeline pipeline(scene);
   nlohmann::ordered_json rep;
   const ScreenFrame f = pipeline.geometry(frame, channel, rep);

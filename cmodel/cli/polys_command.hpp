@@ -6,12 +6,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/cli_common.hpp"
+
 namespace cig::cli {
 
 struct PolysCommand {
   CLI::App* sub = nullptr;
   std::string scene_file, out_file;
   int frame = 0, channel = 0;
+  ModelLimitArgs model_limit;
   void add_to(CLI::App& app);
   int run();
 };

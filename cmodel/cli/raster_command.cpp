@@ -22,6 +22,10 @@ int RasterCommand::run() {
   const ScreenFrame frame = load_polygon_list(polys_file);
   auto eng = make_engine(engine.engine, eo);
   eng->check_raster(frame.raster);
+  eng->check_frame(frame);
+  check_output_file(out_file, "--out");
+  if (!ids_file.empty()) check_output_file(ids_file, "--ids");
+  if (!report_file.empty()) check_output_file(report_file, "--report");
   const auto t0 = Clock::now();
   EngineRun run = eng->render(frame);
   run.report["ms"] = ms_since(t0);
@@ -37,7 +41,7 @@ int RasterCommand::run() {
     r["polygons"] = frame.polygons.size();
     r["light_points"] = frame.light_points.size();
     r["engine_report"] = run.report;
-    write_text_file(report_file, r.dump(2) + "\n");
+    write_text_file(report_file, report_text(r));
   }
   std::cout << "cig: rasterised " << frame.polygons.size() << " polygon(s), " << frame.light_points.size()
             << " light point(s) with engine " << engine.engine << " to " << out_file << "\n";

@@ -20,12 +20,13 @@ void RenderCommand::add_to(CLI::App& app) {
   sub->add_option("scene", scene_file, "scene file (JSON, scenes/README.md)")->required();
   frame_opt = sub->add_option("--frame", frame_k, "frame number (default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B")->excludes(frame_opt);
-  sub->add_option("--channel", channel, "render only this channel");
+  sub->add_option("--channel", channel, "render only this channel")->check(CLI::Range(0, kMaxChannelIndex));
   sub->add_option("--out", out_dir, "output directory (default out)");
   sub->add_option("--report", report_file, "report file (default DIR/report.json)");
   sub->add_option("--threads", threads, "worker threads over channels (default: cores)")->check(CLI::Range(1, 64));
   sub->add_flag("--ids", write_ids_files, "also write per-channel id buffers (CIGIDS1)");
   engine.add_to(sub);
+  model_limit.add_to(sub);
 }
 
 namespace {
@@ -73,6 +74,20 @@ std::string write_panorama(const Scene& scene, const std::string& out_dir, int f
   return pano;
 }
 
+// Every frame and channel against the engine's capacities before the first image is written
+// (stages A and B only, and only when the scene could exceed them).
+void check_frames(const Scene& scene, int a, int b, const std::vector<int>& channels, const std::string& engine,
+                  const EngineOptions& eo) {
+  if (!scene_exceeds_ids(scene)) return;
+  const auto checker = make_engine(engine, eo);
+  const ScenePipeline pipeline(scene);
+  for (int frame = a; frame <= b; ++frame)
+    for (int c : channels) {
+      nlohmann::ordered_json unused;
+      checker->check_frame(pipeline.geometry(frame, c, unused));
+    }
+}
+
 nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene, const EngineOptions& eo,
                                      double load_ms) {
   nlohmann::ordered_json report;
@@ -95,14 +110,17 @@ int RenderCommand::run() {
   // Phase 1: load and check everything.
   const EngineOptions eo = engine.options();
   const auto t_load = Clock::now();
-  const Scene scene = load_scene(scene_file);
+  const Scene scene = load_scene(scene_file, model_limit.limits());
   const double load_ms = ms_since(t_load);
   int a = 0, b = 0;
   frame_range(frames_text, frame_k, frame_opt->count() > 0, scene.frame_count(), scene_file, a, b);
   const std::vector<int> channels = selected_channels(scene, channel);
   make_engine(engine.engine, eo)->check_raster(scene.raster);
-  std::filesystem::create_directories(out_dir);
+  check_output_dir(out_dir, "--out");
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
+  else check_output_file(report_file, "--report");
+  check_frames(scene, a, b, channels, engine.engine, eo);
+  std::filesystem::create_directories(out_dir);
 
   // Phase 2: the frames.
   const ScenePipeline pipeline(scene);
@@ -129,7 +147,7 @@ int RenderCommand::run() {
 
   // Phase 3: the report.
   report["total_ms"] = ms_since(t_all);
-  write_text_file(report_file, report.dump(2) + "\n");
+  write_text_file(report_file, report_text(report));
   std::cout << "cig: rendered " << (b - a + 1) << " frame(s) x " << channels.size() << " channel(s) of " << scene_file
             << " to " << out_dir << " in " << int(ms_since(t_all)) << " ms (report " << report_file << ")\n";
   return 0;

@@ -17,6 +17,7 @@ struct RenderCommand {
   bool write_ids_files = false;
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;
+  ModelLimitArgs model_limit;
   void add_to(CLI::App& app);
   int run();
 };

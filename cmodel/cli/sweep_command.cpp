@@ -30,11 +30,12 @@ void SweepCommand::add_to(CLI::App& app) {
   sub->add_option("--vary", vary, "KEY=V1,V2,...: the engine option to vary and its values")->required();
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
-  sub->add_option("--channel", channel, "only this channel (scenes)");
+  sub->add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
   sub->add_option("--reference", reference, "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   sub->add_option("--repeat", repeat, "time each image R times, keep the best (default 3)")->check(CLI::Range(1, 1000));
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub);
+  model_limit.add_to(sub);
   sub->get_option("--engine")->required();
 }
 
@@ -139,8 +140,10 @@ int SweepCommand::run() {
   if (base.params.count(varied.key))
     throw InputError("", "--vary", "'" + varied.key + "' is also set by --engine-opt (or a shorthand)");
   const EngineOptions ro = reference_options(reference);
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied, jobs);
+  for (const auto& e : engines) jobs.check_capacity(*e);
+  if (!report_file.empty()) check_output_file(report_file, "--report");
   const std::vector<SweepRow> rows = measure(jobs, varied, ro, engines, repeat);
 
   const int width = int(std::max<std::size_t>(varied.key.size(), 6));
@@ -171,7 +174,7 @@ int SweepCommand::run() {
           << r.totals.max_abs() << std::setw(9) << e.pixels_over_2lsb << std::setw(12) << r.totals.ids_differ << "\n";
     rep["rows"].push_back(to_json(r, jobs));
   }
-  if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
+  if (!report_file.empty()) write_text_file(report_file, report_text(rep));
   std::cout << table.str();
   return 0;
 }

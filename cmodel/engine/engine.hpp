@@ -32,6 +32,9 @@ class RasterEngine {
   virtual EngineRun render(const ScreenFrame& frame) = 0;
   // Checks the engine's options against a raster size before any work (InputError).
   virtual void check_raster(int /*raster*/) const {}
+  // Checks a frame against the engine's capacities (the polygons and lights its id fields hold) and
+  // raster before any work, so that a command fails before its first output (InputError).
+  virtual void check_frame(const ScreenFrame& frame) const { check_raster(frame.raster); }
 };
 
 }  // namespace cig

@@ -10,7 +10,6 @@
 #include <type_traits>
 
 #include "formatter/formatter_twin.hpp"
-#include "hls/pixel/sample_colour.hpp"  // kFogTableSize
 #include "hls/types/fixed.hpp"
 #include "hls/types/zfloat.hpp"
 #include "scene/scene.hpp"
@@ -19,7 +18,7 @@ namespace cig {
 
 template <class Table>
 void fill_fog_table(Table& table, const Fog& fog, bool code_is_inverse_depth) {
-  for (int code = 0; code < hls::kFogTableSize; ++code) {
+  for (int code = 0; code < (1 << 15); ++code) {  // every e8m7 code (UInt<15>)
     hls::ZFloat c;
     c.bits = hls::UInt<15>(code);
     const double z = code_is_inverse_depth ? 1.0 / zfloat_to_double(c) : zfloat_to_double(c);

@@ -32,6 +32,9 @@ namespace {
 // Writes through a temporary file in the same directory, then renames it into place.
 template <class Writer>
 void write_atomically(const std::string& file, Writer&& writer) {
+  // The folder is created with the file (the commands checked that it can be, before any work).
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
   const std::string tmp = file + ".tmp";
   try {
     writer(tmp);

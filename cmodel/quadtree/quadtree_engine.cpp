@@ -40,11 +40,20 @@ class QuadPipeline {
     return quad::Architecture::parse(options_.arch, log2);
   }
 
-  EngineRun render(const ScreenFrame& frame) {
+  // The architecture for the frame's raster, and its polygon count against the ids' 16 bits.
+  quad::Architecture check_frame(const ScreenFrame& frame) const {
     const quad::Architecture arch = check_raster(frame.raster);
-    const int log2 = arch.raster_log2;
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds))
-      throw InputError("", "polygons", "the quadtree engine takes at most 65536 polygons per channel");
+      throw InputError("", "polygons",
+                       "the quadtree engine takes at most 65536 polygons per channel; frame " +
+                           std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
+                           std::to_string(frame.polygons.size()));
+    return arch;
+  }
+
+  EngineRun render(const ScreenFrame& frame) {
+    const quad::Architecture arch = check_frame(frame);
+    const int log2 = arch.raster_log2;
     quad::ArchConfig cfg;
     cfg.fifo_depth = options_.fifo;
     cfg.masks = options_.masks;
@@ -172,6 +181,7 @@ class QuadEngine : public RasterEngine {
   const char* name() const override { return name_; }
   EngineRun render(const ScreenFrame& frame) override { return pipeline_.render(frame); }
   void check_raster(int raster) const override { pipeline_.check_raster(raster); }
+  void check_frame(const ScreenFrame& frame) const override { pipeline_.check_frame(frame); }
 
  private:
   const char* name_;

@@ -118,13 +118,22 @@ class SegmentPipeline {
 
   explicit SegmentPipeline(bool seed_quadrilateral) : SegmentPipeline() { seed_quadrilateral_ = seed_quadrilateral; }
 
-  EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
+  // The raster's log2 and the frame's counts against the hardware's (InputError).
+  static int check_frame(const ScreenFrame& frame) {
     const int n = frame.raster;
     const int log2 = hls::raster_log2_of(n);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2)
       throw InputError("", "raster", "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) || frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
-      throw InputError("", "polygons", "the segment engine takes at most 65536 polygons and 65536 light points per channel");
+      throw InputError("", "polygons",
+                       "the segment engine takes at most 65536 polygons and 65536 light points per channel; frame " +
+                           std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
+                           std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()));
+    return log2;
+  }
+
+  EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
+    const int log2 = check_frame(frame);
     FrameStats st;
     auto t0 = Clock::now();
     format_and_count(frame, log2, st);
@@ -317,6 +326,12 @@ class SegmentEngine : public RasterEngine {
   SegmentEngine(const char* name, const char* format, bool quad) : name_(name), format_(format), pipeline_(quad) {}
   const char* name() const override { return name_; }
   EngineRun render(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
+  void check_raster(int raster) const override {
+    ScreenFrame f;
+    f.raster = raster;
+    SegmentPipeline<P>::check_frame(f);
+  }
+  void check_frame(const ScreenFrame& frame) const override { SegmentPipeline<P>::check_frame(frame); }
 
  private:
   const char* name_;

@@ -2,7 +2,10 @@
 #   1. a polygon list through the pipeline-tree 4p2t with an FST trace and a JSON report: exit 0,
 #      the table, zero mismatches and equal cycles in the report, a non-empty waveform;
 #   2. with stalls (input gaps, output back-pressure): still zero mismatches (the model replays them);
-#   3. an architecture the RTL build does not have: status 2, the rule named, no report written.
+#   3. an architecture the RTL build does not have: status 2, the rule named, no report written;
+#   4. a frame with more lit pixels than the RTL's light covers, with --trace: status 2 and no trace
+#      left behind;
+#   5. an empty polygon list: zero mismatches and one cycle on both sides.
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -38,5 +41,33 @@ execute_process(COMMAND ${CIG} cosim ${polys} --arch 5p --report ${WORK}/bad.jso
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "--arch" OR EXISTS ${WORK}/bad.json)
   message(FATAL_ERROR "--arch 5p: expected status 2 naming --arch and no report; got ${rc}\n${out}\n${err}")
+endif()
+# 4. 4200 lights of 3 x 3 samples on distinct pixels of a 512-line raster: more than the 4096 covers.
+set(lights "")
+foreach(k RANGE 0 4199)
+  math(EXPR col "${k} % 70")
+  math(EXPR row "${k} / 70")
+  math(EXPR x "${col} * 28 - 980")
+  math(EXPR y "${row} * 28 - 980")
+  string(APPEND lights "{\"centre\": [${x}e-3, ${y}e-3, 50], \"diameter\": 0.003},")
+endforeach()
+string(REGEX REPLACE ",$" "" lights "${lights}")
+file(WRITE ${WORK}/lights.polys.json
+     "{\"format\": \"cig-polys\", \"version\": 1, \"raster\": 512, \"polygons\": [], \"light_points\": [${lights}]}")
+execute_process(COMMAND ${CIG} cosim ${WORK}/lights.polys.json --trace ${WORK}/lights.fst
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR EXISTS ${WORK}/lights.fst)
+  message(FATAL_ERROR "too many lit pixels with --trace: expected status 2 and no trace; got ${rc}\n${out}\n${err}")
+endif()
+
+# 5. An empty frame.
+file(WRITE ${WORK}/empty.polys.json "{\"format\": \"cig-polys\", \"version\": 1, \"raster\": 64, \"polygons\": []}")
+execute_process(COMMAND ${CIG} cosim ${WORK}/empty.polys.json --report ${WORK}/empty.json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(READ ${WORK}/empty.json rep)
+string(JSON cm GET "${rep}" runs 0 cycles_model)
+string(JSON cr GET "${rep}" runs 0 cycles_rtl)
+if(NOT rc EQUAL 0 OR NOT cm EQUAL 1 OR NOT cr EQUAL 1)
+  message(FATAL_ERROR "empty frame: status ${rc}, cycles model ${cm}, RTL ${cr}\n${out}\n${err}")
 endif()
 message(STATUS "ok:\n${out}")

@@ -20,16 +20,17 @@ void CosimCommand::add_options(CLI::App& app) {
   app.add_option("--arch", arch, "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np");
   frame_opt = app.add_option("--frame", frame_k, "frame number (scenes; default 0)");
   app.add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
-  app.add_option("--channel", channel, "only this channel (scenes)");
+  app.add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
   app.add_option("--trace", trace_file, "write the RTL's waveform (FST) of the first image");
   app.add_option("--stall-seed", stall_seed, "seed of the verification stall pattern (default 1)");
   app.add_option("--input-gaps", input_gaps, "percent of cycles the polygon port offers nothing (0..95)")->check(CLI::Range(0, 95));
   app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")->check(CLI::Range(0, 95));
   app.add_option("--report", report_file, "write a JSON report");
+  model_limit.add_to(&app);
 }
 
 int CosimCommand::run() {
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel);
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   const int raster = jobs.screen_frame(0).raster;
   const int log2 = hls::raster_log2_of(raster);
   std::string wanted = arch.empty() ? std::to_string(log2) + "p" : arch;
@@ -43,6 +44,8 @@ int CosimCommand::run() {
   if (cfg.raster_log2 == 0)
     throw InputError("", "--arch", "the RTL build has no configuration " + a.text + " for a " + std::to_string(raster) + "-line raster" +
                                        (have.empty() ? " (it has none for that raster)" : " (it has: " + have + ")"));
+  if (!report_file.empty()) check_output_file(report_file, "--report");
+  if (!trace_file.empty()) check_output_file(trace_file, "--trace");
   auto rtl = cosim::make_rtl_runner(cfg.raster_log2, cfg.tree_levels);
   if (!trace_file.empty()) {
     const auto parent = std::filesystem::path(trace_file).parent_path();
@@ -65,6 +68,11 @@ int CosimCommand::run() {
     try {
       r = cosim::cosim_frame(jobs.screen_frame(k), *rtl, cfg, stalls);
     } catch (const InputError& e) {
+      // An input error leaves no output behind: the trace started for this run goes.
+      if (!trace_file.empty()) {
+        rtl.reset();
+        std::filesystem::remove(trace_file);
+      }
       if (!e.file().empty() || e.where() == "--arch") throw;
       throw InputError(input, "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)) + ", " + e.where(), e.rule());
     }
@@ -93,7 +101,7 @@ int CosimCommand::run() {
   rep["records_compared"] = records;
   rep["mismatches"] = mismatches;
   rep["cycle_mismatches"] = bad_cycles;
-  if (!report_file.empty()) write_text_file(report_file, rep.dump(2) + "\n");
+  if (!report_file.empty()) write_text_file(report_file, report_text(rep));
   return mismatches == 0 && bad_cycles == 0 ? 0 : 1;
 }
 

@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/cli_common.hpp"
+
 namespace cig::cli {
 
 struct CosimCommand {
@@ -16,6 +18,7 @@ struct CosimCommand {
   unsigned stall_seed = 1;
   int input_gaps = 0, output_stalls = 0;
   CLI::Option* frame_opt = nullptr;
+  ModelLimitArgs model_limit;
   void add_options(CLI::App& app);  // the options, on cig-cosim's own command line
   int run();
 };
