@@ -18,7 +18,7 @@ if [ ! -f build-fuzz/CMakeCache.txt ]; then
     -DCIG_BUILD_TESTS=ON -DCIG_WITH_RTL=OFF
 fi
 targets=$1
-[ "$targets" = all ] && targets="scene_loader obj_loader polygon_list raster"
+[ "$targets" = all ] && targets="scene_loader obj_loader polygon_list raster options"
 for t in $targets; do
   cmake --build build-fuzz -j"$(nproc)" --target "fuzz_$t"
   cmake -DCIG_FUZZ_SECONDS=$(($2 * 60)) build-fuzz >/dev/null

@@ -8,13 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/arch_command.hpp"
 #include "cli/cli_main.hpp"
-#include "cli/compare_command.hpp"
-#include "cli/polys_command.hpp"
-#include "cli/raster_command.hpp"
-#include "cli/render_command.hpp"
-#include "cli/sweep_command.hpp"
+#include "cli/commands.hpp"
 
 namespace cig {
 namespace {
@@ -39,45 +34,12 @@ int forward_to_cosim(int argc, char** argv) {
 int run(int argc, char** argv) {
   if (argc >= 2 && std::string(argv[1]) == "cosim") return forward_to_cosim(argc, argv);
   CLI::App app{"cig: computer image generator C model (float reference, bit-accurate engines)"};
-  app.require_subcommand(1);
-  cli::RenderCommand render;
-  cli::RasterCommand raster;
-  cli::PolysCommand polys;
-  cli::CompareCommand compare;
-  cli::SweepCommand sweep;
-  cli::ArchCommand arch;
-  render.add_to(app);
-  raster.add_to(app);
-  polys.add_to(app);
-  compare.add_to(app);
-  sweep.add_to(app);
-  arch.add_to(app);
-  // Listed for --help; `cig cosim ...` never reaches the parser (forward_to_cosim).
-  app.add_subcommand("cosim",
-                     "co-simulate the quadtree RTL against the kernels and the architecture model (runs cig-cosim; "
-                     "`cig cosim --help` for its options)")
-      ->allow_extras();
-
-  // A first word that names no command is answered with the commands, not with CLI11's "A
-  // subcommand is required".
-  if (argc >= 2 && argv[1][0] != '-') {
-    try {
-      app.get_subcommand(std::string(argv[1]));
-    } catch (const CLI::OptionNotFound&) {
-      std::string names;
-      for (const CLI::App* c : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + c->get_name();
-      throw InputError("", "", "unknown command '" + std::string(argv[1]) + "' (commands: " + names + ")");
-    }
-  }
+  cli::Commands commands;
+  commands.add_to(app);
+  cli::Commands::check_command_name(app, argc, argv);
   int status = 0;
   if (!cli::parse_command_line(app, argc, argv, status)) return status;
-  if (*render.sub) return render.run();
-  if (*raster.sub) return raster.run();
-  if (*polys.sub) return polys.run();
-  if (*compare.sub) return compare.run();
-  if (*sweep.sub) return sweep.run();
-  if (*arch.sub) return arch.run();
-  return 0;
+  return commands.run();
 }
 
 }  // namespace
