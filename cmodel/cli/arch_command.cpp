@@ -32,14 +32,16 @@
 namespace cig::cli {
 
 void ArchCommand::add_to(CLI::App& app) {
-  sub = app.add_subcommand("arch", "seed 004's architecture analysis (eq. 2-10) measured with the kernels and the cycle model");
+  sub = app.add_subcommand("arch",
+                           "seed 004's architecture analysis (eq. 2-10) measured with the kernels and the cycle model");
   sub->add_option("--n", raster_log2, "windows table: raster of 2^n lines, n = 4..10 (default 9)");
   sub->add_option("--raster", raster, "windows table: the raster as a line count (16..1024), instead of --n");
   sub->add_option("--perf-n", perf_log2, "performance table: raster of 2^n lines (default 10)");
   sub->add_option("--aspects", aspects, "rectangle aspect ratios, each >= 1 (default 1,5,10)")->delimiter(',');
   sub->add_option("--areas", areas, "rectangle areas S in pixels (default 1,10,100,1000)")->delimiter(',');
   sub->add_option("--positions", positions, "windows table: random sub-pixel positions per rectangle (default 256)");
-  sub->add_option("--archs", archs, "performance table: architectures (eq. 1; default: the seed's set for the raster)")->delimiter(',');
+  sub->add_option("--archs", archs, "performance table: architectures (eq. 1; default: the seed's set for the raster)")
+      ->delimiter(',');
   sub->add_option("--stream", stream, "performance table: rectangles per area in the stream (default 1024)");
   sub->add_option("--perf-aspect", perf_aspect, "performance table: the rectangles' aspect ratio (default 5)");
   sub->add_option("--perf-rotation", perf_rotation, "performance table: rotation, 0 or 45 degrees (default 45)");
@@ -94,17 +96,24 @@ std::vector<std::string> default_archs(int n) {
 }
 
 void print_pe_table(ordered_json& report) {
-  std::printf("== Table 1: N_arch of eq. 10 for n = 10: N_arch = i - 1 + (4^(n-i+1) - 1)/3, the pipeline-tree (i-1)p(n-i+1)t ==\n");
-  std::printf("%3s  %-5s %10s %14s %12s %14s  %s\n", "i", "arch", "eq. 10", "pe_count()", "seed table", "eq. 10 (4 sd)", "");
+  std::printf(
+      "== Table 1: N_arch of eq. 10 for n = 10: N_arch = i - 1 + (4^(n-i+1) - 1)/3, the pipeline-tree (i-1)p(n-i+1)t ==\n");
+  std::printf("%3s  %-5s %10s %14s %12s %14s  %s\n", "i", "arch", "eq. 10", "pe_count()", "seed table", "eq. 10 (4 sd)",
+              "");
   ordered_json rows = ordered_json::array();
   bool all_ok = true;
   for (const quad::SeedPeRow& r : quad::seed_pe_table()) {
     const double r4 = quad::round_significant(double(r.formula), 4);
     const bool ok = r.formula == r.parsed && std::fabs(r4 - r.seed_printed) <= 1e-9 * r.seed_printed;
     all_ok = all_ok && ok;
-    std::printf("%3d  %-5s %10lld %14lld %12s %14s  %s\n", r.i, r.arch.c_str(), r.formula, r.parsed, r.seed_text.c_str(),
-                fmt(r4 >= 1e4 ? "%.3e" : "%.0f", r4).c_str(), ok ? "agree" : "DIFFER");
-    rows.push_back({{"i", r.i}, {"arch", r.arch}, {"eq10", r.formula}, {"pe_count", r.parsed}, {"seed_table", r.seed_printed}, {"agree", ok}});
+    std::printf("%3d  %-5s %10lld %14lld %12s %14s  %s\n", r.i, r.arch.c_str(), r.formula, r.parsed,
+                r.seed_text.c_str(), fmt(r4 >= 1e4 ? "%.3e" : "%.0f", r4).c_str(), ok ? "agree" : "DIFFER");
+    rows.push_back({{"i", r.i},
+                    {"arch", r.arch},
+                    {"eq10", r.formula},
+                    {"pe_count", r.parsed},
+                    {"seed_table", r.seed_printed},
+                    {"agree", ok}});
   }
   std::printf("%s (SPEC.md's 87,381 and 21,845 are the trees alone: hls/quadtree/ARCHITECTURES.md, Table 1)\n\n",
               all_ok ? "eq. 10, Architecture::pe_count() and the seed's table agree for every i."
@@ -167,7 +176,9 @@ ordered_json print_window_rows(const quad::WindowTable& t, int n, ExceedCounts& 
     ++counts.rows;
     std::printf("%5d %6dpx %9.3f %7.3f %6d %9.3f %9.3f %9.3f %9.3f %9.3f%s\n", l, 1 << (n - l), lw.mean, lw.mean_se,
                 lw.max, lw.exact_mean, lw.area_expectation, lw.expectation, lw.bound, lw.mean / lw.bound,
-                significant ? " !" : over ? " ~" : "");
+                significant ? " !"
+                : over      ? " ~"
+                            : "");
     levels.push_back(to_json(l, n, lw));
   }
   return to_json(r, std::move(levels));
@@ -180,17 +191,20 @@ ordered_json window_table(const ArchCommand& c, const std::vector<quad::TestRect
     tables[std::size_t(k)] = quad::measure_windows(rects[std::size_t(k)], c.positions, c.seed + std::uint32_t(k));
   });
   const int n = c.raster_log2;
-  std::printf("== Table 2: windows per level w_i(S) against eq. 2-3, raster %d (n = %d), %d positions per rectangle ==\n",
-              1 << n, n, c.positions);
-  std::printf("bound: eq. 2 with L = %.3f, alpha = beta = 3/4 pixel; '!' mean above the bound by > 3 se, '~' within 3 se.\n"
-              "The columns, E_area, E_cons and why some rows exceed eq. 2: hls/quadtree/ARCHITECTURES.md, Table 2.\n",
-              quad::kSeedShapeFactor);
+  std::printf(
+      "== Table 2: windows per level w_i(S) against eq. 2-3, raster %d (n = %d), %d positions per rectangle ==\n",
+      1 << n, n, c.positions);
+  std::printf(
+      "bound: eq. 2 with L = %.3f, alpha = beta = 3/4 pixel; '!' mean above the bound by > 3 se, '~' within 3 se.\n"
+      "The columns, E_area, E_cons and why some rows exceed eq. 2: hls/quadtree/ARCHITECTURES.md, Table 2.\n",
+      quad::kSeedShapeFactor);
   ordered_json jt = ordered_json::array();
   ExceedCounts counts;
   for (const quad::WindowTable& t : tables) jt.push_back(print_window_rows(t, n, counts));
-  std::printf("\nSummary: the measured mean exceeds eq. 2 at %d of %d (shape, S, level) rows (%d by more than 3 se); the\n"
-              "exact (ideal-test) mean at %d.\n\n",
-              counts.mean, counts.rows, counts.significant, counts.exact);
+  std::printf(
+      "\nSummary: the measured mean exceeds eq. 2 at %d of %d (shape, S, level) rows (%d by more than 3 se); the\n"
+      "exact (ideal-test) mean at %d.\n\n",
+      counts.mean, counts.rows, counts.significant, counts.exact);
   return {{"raster_log2", n},
           {"positions", c.positions},
           {"shape_factor_L", quad::kSeedShapeFactor},
@@ -258,19 +272,21 @@ ordered_json to_json(const PerformanceRow& r) {
 }
 
 // One area's rows: every architecture against the stack (meas[0] of the area).
-void print_area_rows(const quad::TestRect& rect, const std::vector<Architecture>& archs, const quad::ArchMeasurement* meas,
-                     int n, ordered_json& jrows) {
+void print_area_rows(const quad::TestRect& rect, const std::vector<Architecture>& archs,
+                     const quad::ArchMeasurement* meas, int n, ordered_json& jrows) {
   const quad::ArchMeasurement& st = meas[0];
   std::vector<double> w;
   for (long long c : st.covered) w.push_back(double(c) / st.polygons);
   const double eq_stack = quad::analytic_cycles_per_polygon(archs[0], w);
   std::string wtext;
   for (std::size_t l = 1; l < w.size(); ++l) wtext += (l > 1 ? " " : "") + fmt(w[l] < 10 ? "%.2f" : "%.0f", w[l]);
-  std::printf("S = %g (grid rectangle %.3f px): measured w_1..w_%d = %s\n", rect.nominal_area, rect.area, n, wtext.c_str());
+  std::printf("S = %g (grid rectangle %.3f px): measured w_1..w_%d = %s\n", rect.nominal_area, rect.area, n,
+              wtext.c_str());
   for (std::size_t a = 0; a < archs.size(); ++a) {
     const quad::ArchMeasurement& m = meas[a];
     for (std::size_t l = 0; l < m.covered.size(); ++l)
-      if (m.covered[l] != st.covered[l]) throw std::logic_error("arch: architectures disagree on the windows of the same stream");
+      if (m.covered[l] != st.covered[l])
+        throw std::logic_error("arch: architectures disagree on the windows of the same stream");
     PerformanceRow r{&rect, &m, quad::analytic_cycles_per_polygon(archs[a], w), 0, 0, 0, w};
     const double pes = double(m.pes);
     r.speed = st.cycles_per_polygon / m.cycles_per_polygon;
@@ -287,9 +303,10 @@ void print_area_rows(const quad::TestRect& rect, const std::vector<Architecture>
 // project's alpha = beta = 3/4, t_p = 0): speed-up over the stack / load R per architecture.
 ordered_json seed_model_table(const std::vector<Architecture>& archs, const std::vector<quad::TestRect>& rects, int n,
                               double alpha, double tp_over_te, const char* title) {
-  std::printf("\n-- The seed's idealisation, %s: w_i from eq. 2 (alpha = beta = %g, L = %.3f), eq. 5-6 with\n"
-              "t_p/t_e = %g (t_i = t_e (4 w_(i-1) + (t_p/t_e) w_i)), eq. 8-9: speed-up over the stack / load R --\n",
-              title, alpha, quad::kSeedShapeFactor, tp_over_te);
+  std::printf(
+      "\n-- The seed's idealisation, %s: w_i from eq. 2 (alpha = beta = %g, L = %.3f), eq. 5-6 with\n"
+      "t_p/t_e = %g (t_i = t_e (4 w_(i-1) + (t_p/t_e) w_i)), eq. 8-9: speed-up over the stack / load R --\n",
+      title, alpha, quad::kSeedShapeFactor, tp_over_te);
   std::printf("%6s", "S");
   for (const Architecture& a : archs) std::printf(" %15s", a.text.c_str());
   std::printf("\n");
@@ -319,12 +336,14 @@ ordered_json performance_table(const ArchCommand& c, const std::vector<Architect
   const auto t0 = Clock::now();
   const int n = c.perf_log2;
   const std::vector<quad::ArchMeasurement> meas = measure_architectures(c, archs, rects, workers);
-  std::printf("== Table 3: relative performance and load of the architectures (seed 004 Fig. 4, eq. 5-9), raster %d (n = %d) ==\n",
-              1 << n, n);
-  std::printf("Stream: %d opaque %s rectangles per area at random positions, masks off, FIFO depth %d; p = P/P_max with\n"
-              "P_max = 1/4 polygon per clock; meas: the cycle model, eq: eq. 5-8 with the measured w_i; R = eq. 9's load.\n"
-              "Timing model, columns and discussion: hls/quadtree/ARCHITECTURES.md, Table 3.\n",
-              c.stream, rects.front().label().c_str(), c.fifo);
+  std::printf(
+      "== Table 3: relative performance and load of the architectures (seed 004 Fig. 4, eq. 5-9), raster %d (n = %d) ==\n",
+      1 << n, n);
+  std::printf(
+      "Stream: %d opaque %s rectangles per area at random positions, masks off, FIFO depth %d; p = P/P_max with\n"
+      "P_max = 1/4 polygon per clock; meas: the cycle model, eq: eq. 5-8 with the measured w_i; R = eq. 9's load.\n"
+      "Timing model, columns and discussion: hls/quadtree/ARCHITECTURES.md, Table 3.\n",
+      c.stream, rects.front().label().c_str(), c.fifo);
   std::printf("%6s %-9s %7s %9s %9s %7s %7s %8s %8s %8s %8s %7s %7s\n", "S", "arch", "N_arch", "clk/poly", "eq", "p",
               "p eq", "speedup", "sp eq", "R", "R eq", "util", "stall%");
   ordered_json jrows = ordered_json::array();

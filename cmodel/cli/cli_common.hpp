@@ -32,15 +32,17 @@ struct EngineArgs {
 
   // `required`: the command compares an engine with the reference, so it must be named.
   void add_to(CLI::App* app, bool required = false) {
-    auto* option = app->add_option("--engine", engine, "raster engine (" + [] {
-      std::string s;
-      for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
-      return s;
-    }() + ")");
+    auto* option = app->add_option(
+        "--engine", engine, "raster engine (" + [] {
+          std::string s;
+          for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
+          return s;
+        }() + ")");
     if (required) option->required();
     app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
     app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
-    app->add_option("--arch", arch, "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
+    app->add_option("--arch", arch,
+                    "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
     app->add_option("--masks", masks, "quadtree engines: multilevel priority masks on|off");
   }
   EngineOptions options() const {
@@ -84,9 +86,7 @@ inline void parse_frames(const std::string& text, int& a, int& b) {
       b = std::stoi(text.substr(colon + 1), &used);
       if (used != text.size() - colon - 1) bad();
     }
-  } catch (const std::logic_error&) {
-    bad();
-  }
+  } catch (const std::logic_error&) { bad(); }
   if (a < 0 || b < a) bad();
 }
 
@@ -125,10 +125,9 @@ inline void frame_range(const std::string& frames_text, int frame_k, bool frame_
   else if (frame_given) throw InputError("", "--frame", "frame must not be negative");
   const int last = frame_count - 1;
   if (b > last)
-    throw InputError(scene_file, "observer.keyframes",
-                     "frame " + std::to_string(b) + " lies outside the observer path (frames 0.." +
-                         std::to_string(last) + ")");
+    throw InputError(
+        scene_file, "observer.keyframes",
+        "frame " + std::to_string(b) + " lies outside the observer path (frames 0.." + std::to_string(last) + ")");
 }
-
 
 }  // namespace cig::cli

@@ -23,9 +23,7 @@ inline bool parse_command_line(CLI::App& app, int argc, char** argv, int& status
   } catch (const CLI::CallForAllHelp& e) {
     status = app.exit(e);
     return false;
-  } catch (const CLI::ParseError& e) {
-    throw InputError("", "", e.what());
-  }
+  } catch (const CLI::ParseError& e) { throw InputError("", "", e.what()); }
   return true;
 }
 

@@ -5,10 +5,10 @@
 // more than 2 LSB and the pixels whose polygon id differs; writes difference images (x8) to DIR.
 #include <algorithm>
 #include <atomic>
-#include <mutex>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <mutex>
 #include <thread>
 
 #include "cli/compare_command.hpp"
@@ -24,7 +24,9 @@ void CompareCommand::add_to(CLI::App& app) {
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   sub->add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
-  sub->add_option("--reference", reference, "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
+  sub->add_option(
+      "--reference", reference,
+      "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   sub->add_option("--out", out_dir, "write difference images (|error| x 8) here");
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub, true);
@@ -109,8 +111,9 @@ void print_totals(const ComparisonTotals& totals, std::size_t images, bool class
   auto share = [&](double part) { return all.sum_squared > 0 ? 100.0 * part / all.sum_squared : 0.0; };
   ids_share = share(all.sum_squared_ids_differ);
   priority_share = share(totals.priority.sum_squared_priority_colour);
-  std::cout << "      error attribution: " << std::setprecision(1) << ids_share << " % of the squared error lies in the "
-            << all.pixels_ids_differ << " pixels whose visible polygon differs (visibility, coverage), ";
+  std::cout << "      error attribution: " << std::setprecision(1) << ids_share
+            << " % of the squared error lies in the " << all.pixels_ids_differ
+            << " pixels whose visible polygon differs (visibility, coverage), ";
   if (classify)
     std::cout << priority_share << " % in the " << totals.priority.pixels_priority_colour
               << " pixels showing the same polygon whose colour visibility by priority order changes in the reference"
@@ -137,7 +140,8 @@ nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share,
 int CompareCommand::run() {
   const EngineOptions eo = engine.options();
   const EngineOptions ro = reference_options(reference);
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
+  const FrameJobs jobs =
+      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   if (jobs.size() > 0) make_engine(engine.engine, eo)->check_raster(jobs.screen_frame(0).raster);
   jobs.check_capacity(*make_engine(engine.engine, eo));
   if (!out_dir.empty()) check_output_dir(out_dir, "--out");

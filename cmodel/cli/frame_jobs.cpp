@@ -28,8 +28,11 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
   if (input_kind(text, input) == InputKind::kPolygonList) {
     // --frame, --frames and --channel choose images of a scene; a polygon list is one image.
     if (frame_given || !frames_text.empty() || channel >= 0)
-      throw InputError(input, "", std::string(frame_given ? "--frame" : !frames_text.empty() ? "--frames" : "--channel") +
-                                      " applies to a scene; this input is a polygon list (one image)");
+      throw InputError(input, "",
+                       std::string(frame_given            ? "--frame"
+                                   : !frames_text.empty() ? "--frames"
+                                                          : "--channel") +
+                           " applies to a scene; this input is a polygon list (one image)");
     j.list_.push_back(parse_polygon_list(text, input));
     j.jobs_.push_back({j.list_[0].frame, j.list_[0].channel});
     return j;
@@ -63,11 +66,17 @@ void FrameJobs::check_capacity(const RasterEngine& engine) const {
 }
 
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {
-  return {frame, channel, compare_images(got.image, reference.image, got.ids, reference.ids), differing_ids(got.ids, reference.ids), {}};
+  return {frame,
+          channel,
+          compare_images(got.image, reference.image, got.ids, reference.ids),
+          differing_ids(got.ids, reference.ids),
+          {}};
 }
 
-void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference) {
-  c.priority = attribute_priority(got.image, got.ids, reference.image, reference.ids, priority_reference.image, priority_reference.ids);
+void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference,
+                        const RasterImage& priority_reference) {
+  c.priority = attribute_priority(got.image, got.ids, reference.image, reference.ids, priority_reference.image,
+                                  priority_reference.ids);
 }
 
 nlohmann::ordered_json comparison_json(const Comparison& c) {

@@ -56,7 +56,8 @@ struct Comparison {
 };
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference);
 // Fills c.priority from `priority_reference` (the same reference with visibility by priority).
-void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference, const RasterImage& priority_reference);
+void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference,
+                        const RasterImage& priority_reference);
 nlohmann::ordered_json comparison_json(const Comparison& c);
 
 // Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.

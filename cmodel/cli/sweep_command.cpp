@@ -31,7 +31,9 @@ void SweepCommand::add_to(CLI::App& app) {
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   sub->add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
-  sub->add_option("--reference", reference, "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
+  sub->add_option(
+      "--reference", reference,
+      "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   sub->add_option("--repeat", repeat, "time each image R times, keep the best (default 3)")->check(CLI::Range(1, 1000));
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub);
@@ -85,9 +87,7 @@ std::vector<std::unique_ptr<RasterEngine>> make_engines(const SweepCommand& c, c
     try {
       engines.push_back(make_engine(c.engine.engine, o));
       if (jobs.size() > 0) engines.back()->check_raster(jobs.screen_frame(0).raster);
-    } catch (const InputError& e) {
-      throw InputError("", "--vary", varied.key + "=" + value + ": " + e.rule());
-    }
+    } catch (const InputError& e) { throw InputError("", "--vary", varied.key + "=" + value + ": " + e.rule()); }
   }
   return engines;
 }
@@ -140,7 +140,8 @@ int SweepCommand::run() {
   if (base.params.count(varied.key))
     throw InputError("", "--vary", "'" + varied.key + "' is also set by --engine-opt (or a shorthand)");
   const EngineOptions ro = reference_options(reference);
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
+  const FrameJobs jobs =
+      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied, jobs);
   for (const auto& e : engines) jobs.check_capacity(*e);
   if (!report_file.empty()) check_output_file(report_file, "--report");

@@ -13,15 +13,16 @@ class InputError : public std::runtime_error {
   // file: the input's path ("" for command-line options); where: JSON path, "line N", option name.
   InputError(std::string file, std::string where, std::string rule)
       : std::runtime_error(format(file, where, rule)),
-        file_(std::move(file)), where_(std::move(where)), rule_(std::move(rule)) {}
+        file_(std::move(file)),
+        where_(std::move(where)),
+        rule_(std::move(rule)) {}
 
   const std::string& file() const { return file_; }
   const std::string& where() const { return where_; }
   const std::string& rule() const { return rule_; }
 
  private:
-  static std::string format(const std::string& file, const std::string& where,
-                            const std::string& rule) {
+  static std::string format(const std::string& file, const std::string& where, const std::string& rule) {
     std::string s = file;
     if (!where.empty()) s += (s.empty() ? "" : ": ") + where;
     return s + (s.empty() ? "" : ": ") + rule;

@@ -78,8 +78,7 @@ std::size_t JsonNode::array_size(std::size_t min, std::size_t max) const {
   std::size_t n = array_size();
   if (n < min || n > max) {
     if (min == max) fail("must have exactly " + std::to_string(min) + " elements, has " + std::to_string(n));
-    fail("must have " + std::to_string(min) + " to " + std::to_string(max) + " elements, has " +
-         std::to_string(n));
+    fail("must have " + std::to_string(min) + " to " + std::to_string(max) + " elements, has " + std::to_string(n));
   }
   return n;
 }
@@ -112,8 +111,7 @@ long long JsonNode::integer() const {
   if (!value_->is_number_integer())
     fail(std::string("must be an integer, found ") +
          (value_->is_number() ? "a fractional number" : type_name(*value_)));
-  if (value_->is_number_unsigned() && value_->get<unsigned long long>() > 1ull << 62)
-    fail("integer is too large");
+  if (value_->is_number_unsigned() && value_->get<unsigned long long>() > 1ull << 62) fail("integer is too large");
   return value_->get<long long>();
 }
 
@@ -243,7 +241,12 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     if (auto p = token.empty() ? std::string::npos : text.find(token); p != std::string::npos) {
       std::size_t line = 1, col = 1;
       for (std::size_t i = 0; i < p; ++i) {
-        if (text[i] == '\n') { ++line; col = 1; } else { ++col; }
+        if (text[i] == '\n') {
+          ++line;
+          col = 1;
+        } else {
+          ++col;
+        }
       }
       where = "line " + std::to_string(line) + ", column " + std::to_string(col);
     }
@@ -261,8 +264,8 @@ std::string read_text_file(const std::string& file, long long max_bytes, const c
   if (!std::filesystem::is_regular_file(status))
     throw InputError(file, "", "is not a regular file (a device, FIFO or socket cannot be read as input)");
   const auto size = std::filesystem::file_size(file, ec);
-  const std::string limit = std::to_string(max_bytes) + " bytes" +
-                            (*limit_option ? std::string(" (") + limit_option + ")" : std::string());
+  const std::string limit =
+      std::to_string(max_bytes) + " bytes" + (*limit_option ? std::string(" (") + limit_option + ")" : std::string());
   if (!ec && (long long)size > max_bytes)
     throw InputError(file, "", "file is " + std::to_string(size) + " bytes, more than the limit of " + limit);
   std::ifstream in(file, std::ios::binary);
@@ -281,8 +284,6 @@ std::string read_text_file(const std::string& file, long long max_bytes, const c
   return text;
 }
 
-nlohmann::json read_json_file(const std::string& file) {
-  return parse_json_text(read_text_file(file), file);
-}
+nlohmann::json read_json_file(const std::string& file) { return parse_json_text(read_text_file(file), file); }
 
 }  // namespace cig

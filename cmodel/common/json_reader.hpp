@@ -39,9 +39,9 @@ class JsonNode {
   JsonNode operator[](std::size_t i) const;
 
   // Scalars.
-  double number() const;  // finite
-  double number(double lo, double hi) const;   // finite, lo <= x <= hi
-  double positive() const;                     // finite, > 0
+  double number() const;                      // finite
+  double number(double lo, double hi) const;  // finite, lo <= x <= hi
+  double positive() const;                    // finite, > 0
   long long integer() const;
   long long integer(long long lo, long long hi) const;
   bool boolean() const;
@@ -50,7 +50,7 @@ class JsonNode {
   // Fixed-length numeric arrays.
   glm::dvec3 vec3() const;
   glm::dvec3 vec3(double lo, double hi) const;  // each component in [lo, hi]
-  glm::dvec3 colour() const;  // three numbers in [0, 1]
+  glm::dvec3 colour() const;                    // three numbers in [0, 1]
 
   // Convenience for optional members with defaults.
   double number_or(const char* key, double fallback) const;

@@ -16,7 +16,7 @@
 namespace cig {
 
 struct EngineOptions {
-  bool snap = false;  // snap positions to the formatter grid first (float engine)
+  bool snap = false;                          // snap positions to the formatter grid first (float engine)
   std::map<std::string, std::string> params;  // engine-specific settings (--engine-opt KEY=VALUE)
 };
 

@@ -32,10 +32,10 @@ constexpr double kMaxLightDiameterUnits = hls::kMaxLightDiameter;
 ScreenFrame snap_to_formatter_grid(const ScreenFrame& f);
 double snap_grid_coordinate(double s);  // Xs or Ys -> snapped Xs or Ys
 
-double twin_grid(double s);         // X or Y from Xs or Ys
-double twin_intensity(double is);   // I from Is
-double twin_diameter(double ds);    // D from Ds
-double twin_colour(double c);       // one colour component
+double twin_grid(double s);        // X or Y from Xs or Ys
+double twin_intensity(double is);  // I from Is
+double twin_diameter(double ds);   // D from Ds
+double twin_colour(double c);      // one colour component
 
 struct TwinVertex {
   double x = 0, y = 0, i = 0, z = 0;

@@ -15,15 +15,14 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
   JsonNode root(doc, file, "");
   if (root.at("format").string() != "cig-polys")
     root.at("format").fail("must be \"cig-polys\" (a scene uses \"cig-scene\")");
-  root.allow_only({"format", "version", "raster", "frame", "channel", "fog", "background", "polygons",
-                   "light_points"});
+  root.allow_only({"format", "version", "raster", "frame", "channel", "fog", "background", "polygons", "light_points"});
   if (root.at("version").integer() != 1) root.at("version").fail("only version 1 is supported");
   ScreenFrame f;
   if (auto r = root.find("raster")) {
     long long n = r->integer();
     if (!valid_raster_size(n))
-      r->fail("raster size " + std::to_string(n) + " is not a power of two in [" +
-              std::to_string(kMinRaster) + ", " + std::to_string(kMaxRaster) + "]");
+      r->fail("raster size " + std::to_string(n) + " is not a power of two in [" + std::to_string(kMinRaster) + ", " +
+              std::to_string(kMaxRaster) + "]");
     f.raster = int(n);
   }
   f.frame = root.find("frame") ? int(root.at("frame").integer(0, 10'000'000)) : 0;
@@ -51,8 +50,8 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
     std::size_t nv = vs.array_size();
     if (nv < 3) vs.fail("polygon has " + std::to_string(nv) + " vertices; at least 3 are required");
     if (nv > std::size_t(kMaxScreenVertices))
-      vs.fail("polygon has " + std::to_string(nv) + " vertices; at most " +
-              std::to_string(kMaxScreenVertices) + " are accepted");
+      vs.fail("polygon has " + std::to_string(nv) + " vertices; at most " + std::to_string(kMaxScreenVertices) +
+              " are accepted");
     std::vector<glm::dvec2> xy;
     for (std::size_t k = 0; k < nv; ++k) {
       JsonNode v = vs[k];
@@ -90,9 +89,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
   return f;
 }
 
-ScreenFrame load_polygon_list(const std::string& file) {
-  return parse_polygon_list(read_text_file(file), file);
-}
+ScreenFrame load_polygon_list(const std::string& file) { return parse_polygon_list(read_text_file(file), file); }
 
 std::string polygon_list_json(const ScreenFrame& f) {
   // Written by hand rather than through nlohmann::json so that doubles keep all 17 digits and the
@@ -100,8 +97,8 @@ std::string polygon_list_json(const ScreenFrame& f) {
   std::ostringstream s;
   s << std::setprecision(17);
   auto rgb = [&](const Rgb& c) { s << "[" << c.r << ", " << c.g << ", " << c.b << "]"; };
-  s << "{\n  \"format\": \"cig-polys\",\n  \"version\": 1,\n  \"raster\": " << f.raster
-    << ",\n  \"frame\": " << f.frame << ",\n  \"channel\": " << f.channel << ",\n";
+  s << "{\n  \"format\": \"cig-polys\",\n  \"version\": 1,\n  \"raster\": " << f.raster << ",\n  \"frame\": " << f.frame
+    << ",\n  \"channel\": " << f.channel << ",\n";
   if (f.fog.end < 1e29) {
     s << "  \"fog\": {\"colour\": ";
     rgb(f.fog.colour);
@@ -114,8 +111,8 @@ std::string polygon_list_json(const ScreenFrame& f) {
     const auto& p = f.polygons[i];
     s << (i ? ",\n" : "\n") << "    {\"colour\": ";
     rgb(p.colour);
-    s << ", \"opaque\": " << (p.opaque ? "true" : "false") << ", \"protected\": "
-      << (p.protect ? "true" : "false") << ", \"vertices\": [";
+    s << ", \"opaque\": " << (p.opaque ? "true" : "false") << ", \"protected\": " << (p.protect ? "true" : "false")
+      << ", \"vertices\": [";
     for (std::size_t k = 0; k < p.vertices.size(); ++k) {
       const auto& v = p.vertices[k];
       s << (k ? ", " : "") << "[" << v.xs << ", " << v.ys << ", " << v.zs << ", " << v.is << "]";

@@ -143,7 +143,8 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
     const Object& object = scene.objects[entry.object];
     const WorldObject& wobject = db.objects[entry.object];
     g.light_points(object, wobject);
-    for (std::uint32_t si : entry.subobjects) g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
+    for (std::uint32_t si : entry.subobjects)
+      g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
   }
   stats.polygons_out += f.polygons.size();
   stats.light_points_out += f.light_points.size();

@@ -12,11 +12,11 @@
 namespace cig {
 
 struct GeometryStats {
-  std::uint64_t polygons_in = 0;      // polygons of the visible subobjects
-  std::uint64_t backfacing = 0;       // culled as back faces
-  std::uint64_t outside = 0;          // wholly outside one clipping plane
-  std::uint64_t clipped = 0;          // crossed a plane and were cut
-  std::uint64_t degenerate = 0;       // projected to zero screen area
+  std::uint64_t polygons_in = 0;  // polygons of the visible subobjects
+  std::uint64_t backfacing = 0;   // culled as back faces
+  std::uint64_t outside = 0;      // wholly outside one clipping plane
+  std::uint64_t clipped = 0;      // crossed a plane and were cut
+  std::uint64_t degenerate = 0;   // projected to zero screen area
   std::uint64_t polygons_out = 0;
   std::uint64_t vertices_out = 0;
   std::uint64_t light_points_in = 0, light_points_out = 0;

@@ -58,7 +58,8 @@ void PriorityAttribution::add(const PriorityAttribution& a) {
 }
 
 PriorityAttribution attribute_priority(const Image& got, const IdBuffer& got_ids, const Image& reference,
-                                       const IdBuffer& reference_ids, const Image& priority, const IdBuffer& priority_ids) {
+                                       const IdBuffer& reference_ids, const Image& priority,
+                                       const IdBuffer& priority_ids) {
   const std::size_t n = reference_ids.id.size();
   if (got.rgb.size() != reference.rgb.size() || priority.rgb.size() != reference.rgb.size() || got_ids.id.size() != n ||
       priority_ids.id.size() != n || reference.rgb.size() != 3 * n)

@@ -18,7 +18,7 @@ struct ImageError {
   double sum_squared_ids_differ = 0;
   long pixels_ids_differ = 0;
   double mse() const { return pixels ? sum_squared / (3.0 * double(pixels)) : 0; }
-  double psnr() const;  // dB; 99 for identical images
+  double psnr() const;            // dB; 99 for identical images
   void add(const ImageError& e);  // accumulate (for a PSNR over many images)
 };
 
@@ -46,6 +46,7 @@ struct PriorityAttribution {
   void add(const PriorityAttribution& a);
 };
 PriorityAttribution attribute_priority(const Image& got, const IdBuffer& got_ids, const Image& reference,
-                                       const IdBuffer& reference_ids, const Image& priority, const IdBuffer& priority_ids);
+                                       const IdBuffer& reference_ids, const Image& priority,
+                                       const IdBuffer& priority_ids);
 
 }  // namespace cig

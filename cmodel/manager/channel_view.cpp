@@ -11,8 +11,8 @@ ChannelView make_channel_view(const Scene& scene, int frame, int channel) {
   const Pose pose = observer_pose(scene, frame);
   const Channel& ch = scene.channels[std::size_t(channel)];
   // Observer body axes, then the channel's offsets in the observer's frame (yaw right, pitch up).
-  glm::dmat3 body = body_to_world(pose.heading_deg, pose.pitch_deg, pose.roll_deg) *
-                    body_to_world(ch.yaw_deg, ch.pitch_deg, 0);
+  glm::dmat3 body =
+      body_to_world(pose.heading_deg, pose.pitch_deg, pose.roll_deg) * body_to_world(ch.yaw_deg, ch.pitch_deg, 0);
   // body_to_world columns are (right, forward, up); eye wants rows (right, up, forward).
   glm::dmat3 world_to_body = glm::transpose(body);
   glm::dmat3 swap(1, 0, 0, 0, 0, 1, 0, 1, 0);  // (x, y, z)_body -> (x, z, y)_eye

@@ -27,17 +27,21 @@ ScreenFrame ScenePipeline::geometry(int frame, int channel, nlohmann::ordered_js
                              {"subobjects_tested", ms.subobjects_tested},
                              {"subobjects_visible", ms.subobjects_visible},
                              {"ms", ms.ms}};
-  report["geometry"] = {{"polygons_in", gs.polygons_in},       {"backfacing", gs.backfacing},
-                        {"outside", gs.outside},               {"clipped", gs.clipped},
-                        {"degenerate", gs.degenerate},         {"polygons_out", gs.polygons_out},
-                        {"vertices_out", gs.vertices_out},     {"light_points_in", gs.light_points_in},
-                        {"light_points_out", gs.light_points_out}, {"ms", gs.ms}};
+  report["geometry"] = {{"polygons_in", gs.polygons_in},
+                        {"backfacing", gs.backfacing},
+                        {"outside", gs.outside},
+                        {"clipped", gs.clipped},
+                        {"degenerate", gs.degenerate},
+                        {"polygons_out", gs.polygons_out},
+                        {"vertices_out", gs.vertices_out},
+                        {"light_points_in", gs.light_points_in},
+                        {"light_points_out", gs.light_points_out},
+                        {"ms", gs.ms}};
   return f;
 }
 
-std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<int>& channels,
-                                                 const std::string& engine, const EngineOptions& options,
-                                                 int threads) const {
+std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<int>& channels, const std::string& engine,
+                                                 const EngineOptions& options, int threads) const {
   std::vector<ChannelOutput> out(channels.size());
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;

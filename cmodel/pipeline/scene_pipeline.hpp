@@ -30,9 +30,8 @@ class ScenePipeline {
 
   // A, B and the engine for the given channels of one frame; channels run on up to `threads`
   // worker threads, each with its own engine instance.
-  std::vector<ChannelOutput> render(int frame, const std::vector<int>& channels,
-                                    const std::string& engine, const EngineOptions& options,
-                                    int threads) const;
+  std::vector<ChannelOutput> render(int frame, const std::vector<int>& channels, const std::string& engine,
+                                    const EngineOptions& options, int threads) const;
 
  private:
   const Scene& scene_;

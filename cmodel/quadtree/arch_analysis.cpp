@@ -75,8 +75,8 @@ double seed_relative_aperture(int n, int level, double alpha) { return 1.0 + std
 
 double seed_window_bound(int n, int level, double area, double alpha, double beta, double shape_factor) {
   const double ai = seed_relative_aperture(n, level, alpha), bi = seed_relative_aperture(n, level, beta);
-  return std::ldexp(area, 2 * (level - n)) + std::ldexp(shape_factor * std::sqrt((ai * ai + bi * bi) * kPi * area), level - n) +
-         ai * bi;
+  return std::ldexp(area, 2 * (level - n)) +
+         std::ldexp(shape_factor * std::sqrt((ai * ai + bi * bi) * kPi * area), level - n) + ai * bi;
 }
 
 // ---- test rectangles ------------------------------------------------------------------------
@@ -95,9 +95,11 @@ double TestRect::shape_factor(double alpha, double beta) const {
 
 TestRect make_test_rect(int raster_log2, double area, double aspect, int rotation_deg, const std::string& option) {
   if (raster_log2 < hls::kMinRasterLog2 || raster_log2 > hls::kMaxRasterLog2)
-    throw InputError("", "--n", "the raster must have 16 to 1024 lines (n = 4..10), not n = " + std::to_string(raster_log2));
+    throw InputError("", "--n",
+                     "the raster must have 16 to 1024 lines (n = 4..10), not n = " + std::to_string(raster_log2));
   if (!(area > 0) || !std::isfinite(area)) throw InputError("", option, "an area must be a positive number of pixels");
-  if (!(aspect >= 1) || !std::isfinite(aspect)) throw InputError("", "--aspects", "an aspect ratio must be a number >= 1");
+  if (!(aspect >= 1) || !std::isfinite(aspect))
+    throw InputError("", "--aspects", "an aspect ratio must be a number >= 1");
   if (rotation_deg != 0 && rotation_deg != 45) throw std::invalid_argument("make_test_rect: rotation must be 0 or 45");
   TestRect r;
   r.raster_log2 = raster_log2;
@@ -106,7 +108,8 @@ TestRect make_test_rect(int raster_log2, double area, double aspect, int rotatio
   r.rotation_deg = rotation_deg;
   auto too_big = [&] {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "a %s rectangle of %g pixels does not fit the level-1 period (N/2 = %d pixels a side)",
+    std::snprintf(buf, sizeof buf,
+                  "a %s rectangle of %g pixels does not fit the level-1 period (N/2 = %d pixels a side)",
                   r.label().c_str(), area, 1 << (raster_log2 - 1));
     return std::string(buf);
   };
@@ -144,8 +147,7 @@ TestRect make_test_rect(int raster_log2, double area, double aspect, int rotatio
     std::copy(ys, ys + 4, r.vy);
     r.width = r.height = a + b;
   }
-  if (r.width > kPeriodGrid - 2 || r.height > kPeriodGrid - 2)
-    throw InputError("", option, too_big());
+  if (r.width > kPeriodGrid - 2 || r.height > kPeriodGrid - 2) throw InputError("", option, too_big());
   r.area = k * bs * bl / (g * g);
   r.aspect = double(bl) / bs;
   return r;
@@ -240,7 +242,8 @@ void count_windows(const AnalysisWindow& root, int raster_log2, PolygonWindows& 
       hls::evaluate_child(w, q, n, false, child);
       if (!child.covered) continue;
       ++out.conservative[std::size_t(level)];
-      if (level == n) pixels.push_back(std::uint32_t(child.window.y.value()) << 10 | std::uint32_t(child.window.x.value()));
+      if (level == n)
+        pixels.push_back(std::uint32_t(child.window.y.value()) << 10 | std::uint32_t(child.window.x.value()));
       else stack.push_back(child.window);
     }
   }
@@ -278,7 +281,8 @@ WindowTable measure_windows(const TestRect& r, int positions, std::uint32_t seed
     LevelWindows& lw = t.level[std::size_t(l)];
     lw.mean = positions > 0 ? sum[std::size_t(l)] / positions : 0;
     lw.exact_mean = positions > 0 ? exact_sum[std::size_t(l)] / positions : 0;
-    const double var = positions > 1 ? std::max(0.0, (sum_sq[std::size_t(l)] - positions * lw.mean * lw.mean) / (positions - 1)) : 0;
+    const double var =
+        positions > 1 ? std::max(0.0, (sum_sq[std::size_t(l)] - positions * lw.mean * lw.mean) / (positions - 1)) : 0;
     lw.mean_se = positions > 0 ? std::sqrt(var / positions) : 0;
     lw.bound = seed_window_bound(n, l, r.area, kSampleAperture, kSampleAperture, kSeedShapeFactor);
     lw.area_expectation = rect_overlap_area(r, l);
@@ -328,14 +332,15 @@ ArchMeasurement run_architecture(const Architecture& arch, const std::vector<Ana
 }
 
 double analytic_cycles_per_polygon(const Architecture& arch, const std::vector<double>& w, double tp_over_te) {
-  auto t = [&](int level) { return 4.0 * w.at(std::size_t(level - 1)) + tp_over_te * w.at(std::size_t(level)); };  // eq. 5-6
+  auto t = [&](int level) {
+    return 4.0 * w.at(std::size_t(level - 1)) + tp_over_te * w.at(std::size_t(level));
+  };  // eq. 5-6
   double slowest = 0;
   for (const ArchStage& s : arch.stages) {
     double stage = 0;
     if (s.kind == 's')
       for (int l = s.first_level; l <= s.last_level; ++l) stage += t(l);
-    else
-      stage = t(s.first_level);
+    else stage = t(s.first_level);
     slowest = std::max(slowest, stage);
   }
   return slowest;

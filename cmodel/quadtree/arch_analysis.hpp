@@ -44,12 +44,12 @@ using AnalysisWindow = hls::QuadWindow<AnalysisArith>;
 
 // ---- eq. 10 ---------------------------------------------------------------------------------
 struct SeedPeRow {
-  int i = 0;                  // eq. 10's index: the tree has n - i + 1 levels
-  std::string arch;           // the seed's label (10t, 1p9t, ..., 8p2t, 10p)
-  long long formula = 0;      // eq. 10
-  long long parsed = 0;       // Architecture::parse(arch, n).pe_count()
-  double seed_printed = 0;    // the seed's table
-  std::string seed_text;      // as printed, e.g. "8.738e4"
+  int i = 0;                // eq. 10's index: the tree has n - i + 1 levels
+  std::string arch;         // the seed's label (10t, 1p9t, ..., 8p2t, 10p)
+  long long formula = 0;    // eq. 10
+  long long parsed = 0;     // Architecture::parse(arch, n).pe_count()
+  double seed_printed = 0;  // the seed's table
+  std::string seed_text;    // as printed, e.g. "8.738e4"
 };
 // The seed's table of N_arch for n = 10 (i = 1..10).
 std::vector<SeedPeRow> seed_pe_table();
@@ -69,8 +69,8 @@ double seed_window_bound(int n, int level, double area, double alpha, double bet
 struct TestRect {
   int raster_log2 = 9;
   double nominal_area = 1, nominal_aspect = 1;
-  int rotation_deg = 0;       // 0 or 45
-  int vx[4] = {0, 0, 0, 0};   // vertices, grid units from the bounding box's min corner
+  int rotation_deg = 0;      // 0 or 45
+  int vx[4] = {0, 0, 0, 0};  // vertices, grid units from the bounding box's min corner
   int vy[4] = {0, 0, 0, 0};
   int width = 0, height = 0;  // bounding box, grid units
   double area = 0;            // pixels, exact
@@ -144,9 +144,9 @@ struct LevelWindows {
   double mean = 0, exact_mean = 0;  // over the positions
   double mean_se = 0;               // standard error of `mean` (i.i.d. formula; stratified draws do better)
   int max = 0, exact_max = 0;
-  double bound = 0;                 // eq. 2 at the rectangle's exact area, L = kSeedShapeFactor
-  double area_expectation = 0;      // rect_overlap_area: continuous translations (eq. 2 with L_shape)
-  double expectation = 0;           // rect_conservative_expectation: the analysis' grid translations
+  double bound = 0;             // eq. 2 at the rectangle's exact area, L = kSeedShapeFactor
+  double area_expectation = 0;  // rect_overlap_area: continuous translations (eq. 2 with L_shape)
+  double expectation = 0;       // rect_conservative_expectation: the analysis' grid translations
 };
 struct WindowTable {
   TestRect rect;
@@ -160,18 +160,19 @@ WindowTable measure_windows(const TestRect& r, int positions, std::uint32_t seed
 std::vector<AnalysisWindow> rect_stream(const TestRect& r, int count, std::uint32_t seed);
 
 struct ArchMeasurement {
-  std::string arch;                 // normalised text
+  std::string arch;  // normalised text
   long long pes = 0;
   int polygons = 0;
   long long cycles = 0;
   double cycles_per_polygon = 0;
-  double utilisation = 0;           // busy PE cycles / (cycles x PEs)
+  double utilisation = 0;  // busy PE cycles / (cycles x PEs)
   long long busy_cycles = 0, stall_cycles = 0;
-  std::vector<long long> covered;   // per level 0..n: windows emitted (w_l summed over the stream)
-  double seconds = 0;               // host run time
+  std::vector<long long> covered;  // per level 0..n: windows emitted (w_l summed over the stream)
+  double seconds = 0;              // host run time
 };
 // Runs the stream through ArchModel (masks off, `fifo_depth`), pixels into a sink that drops them.
-ArchMeasurement run_architecture(const Architecture& arch, const std::vector<AnalysisWindow>& roots, int fifo_depth = 2);
+ArchMeasurement run_architecture(const Architecture& arch, const std::vector<AnalysisWindow>& roots,
+                                 int fifo_depth = 2);
 
 // eq. 5-8 in units of t_e: t_l = 4 w_(l-1) + (t_p/t_e) w_l; a stack stage takes the sum of its
 // levels' t_l, a pipeline stage its t_l, a tree its first level's t_l (its root PE: the seed's

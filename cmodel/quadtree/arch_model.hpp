@@ -52,7 +52,8 @@ namespace cig::quad {
 // The verification stall pattern: a hash of (seed, cycle, stream), true in `percent` % of cycles.
 inline bool stall_hit(std::uint32_t seed, std::uint64_t cycle, std::uint32_t stream, int percent) {
   if (percent <= 0) return false;
-  std::uint64_t x = (std::uint64_t(seed) << 32) ^ (cycle * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(stream) * 0xD1B54A32D192ED03ull);
+  std::uint64_t x =
+      (std::uint64_t(seed) << 32) ^ (cycle * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(stream) * 0xD1B54A32D192ED03ull);
   x ^= x >> 30;
   x *= 0xBF58476D1CE4E5B9ull;
   x ^= x >> 27;
@@ -73,22 +74,22 @@ struct ArchConfig {
 template <class P>
 struct QuadItem {
   hls::QuadWindow<P> w;
-  hls::UInt<16> samples;   // pixel records: the covered samples
-  std::uint32_t piece = 0; // index of the polygon piece in the input stream
+  hls::UInt<16> samples;    // pixel records: the covered samples
+  std::uint32_t piece = 0;  // index of the polygon piece in the input stream
 };
 
 struct LevelStats {
-  long long tested = 0;         // children of this level evaluated
-  long long covered = 0;        // children of this level emitted (w_l)
-  long long masked = 0;         // children of this level skipped by their mask bit
-  long long full_opaque = 0;    // children of this level fully covered by an opaque polygon
-  long long loaded = 0;         // windows of this level a PE took
+  long long tested = 0;             // children of this level evaluated
+  long long covered = 0;            // children of this level emitted (w_l)
+  long long masked = 0;             // children of this level skipped by their mask bit
+  long long full_opaque = 0;        // children of this level fully covered by an opaque polygon
+  long long loaded = 0;             // windows of this level a PE took
   long long loaded_all_masked = 0;  // ... of which all four children were masked
 };
 
 struct PieceStats {
-  int deepest_level = 0;        // deepest level of any emitted window (0: only its root)
-  bool met_mask = false;        // some child (or the root's word) was masked
+  int deepest_level = 0;  // deepest level of any emitted window (0: only its root)
+  bool met_mask = false;  // some child (or the root's word) was masked
   long long pixel_records = 0;
   long long accepted_cycle = -1, last_cycle = -1;
 };
@@ -99,7 +100,7 @@ struct ArchStats {
   std::vector<long long> pe_busy_cycles;   // cycles a PE evaluated a child (stalls excluded)
   std::vector<long long> pe_stall_cycles;  // cycles a PE held a covered child its output could not take
   long long pixel_records = 0, pixels_full = 0, mask_sets = 0, mask_words_full = 0;
-  long long input_wait_cycles = 0;         // cycles the input had a piece but the first FIFO was full
+  long long input_wait_cycles = 0;  // cycles the input had a piece but the first FIFO was full
   std::vector<PieceStats> pieces;
 };
 
@@ -120,7 +121,8 @@ class ArchTracer {
   virtual ~ArchTracer() = default;
   virtual void load(long long /*cycle*/, int /*pe*/, const QuadItem<P>& /*window*/, unsigned /*mask*/) {}
   virtual void emit(long long /*cycle*/, int /*pe*/, int /*child*/, const QuadItem<P>& /*child*/, bool /*full*/) {}
-  virtual void pixel(long long /*cycle*/, int /*unit*/, const QuadItem<P>& /*record*/, unsigned /*fresh*/, bool /*became_full*/) {}
+  virtual void pixel(long long /*cycle*/, int /*unit*/, const QuadItem<P>& /*record*/, unsigned /*fresh*/,
+                     bool /*became_full*/) {}
   virtual void mask_set(long long /*cycle*/, int /*level*/, int /*x*/, int /*y*/, int /*child*/) {}
 };
 
@@ -186,20 +188,20 @@ class ArchModel {
 
  private:
   struct Fifo {
-    std::vector<int> buf;          // ring of item slots, allocated on first push
+    std::vector<int> buf;  // ring of item slots, allocated on first push
     int head = 0, count = 0;
-    bool popped = false;           // this cycle
+    bool popped = false;  // this cycle
     int start_count() const { return count + (popped ? 1 : 0); }
   };
   struct Work {
-    int slot = -1;                 // the window held (an item slot)
-    std::vector<int> lifo;         // stacks: pending windows (item slots)
+    int slot = -1;          // the window held (an item slot)
+    std::vector<int> lifo;  // stacks: pending windows (item slots)
   };
   struct Pe {
     int stage = 0;
     int first_level = 1, last_level = 1;  // levels of the children it produces
     int in_fifo = 0;
-    int out_base = 0;                      // FIFO index (or pixel FIFO index) of child 0
+    int out_base = 0;  // FIFO index (or pixel FIFO index) of child 0
     bool out_by_quadrant = false;
     bool out_pixel = false;
     bool busy = false;
@@ -381,7 +383,8 @@ class ArchModel {
     // The popped item leaves a FIFO (or the LIFO) and becomes the PE's window (or is dropped).
     if (!pe.work) pe.work = std::make_unique<Work>();
     const int wl = int(next.w.level.value());
-    const unsigned mask = cfg_.masks ? unsigned(hls::mask_read(masks, wl, int(next.w.x.value()), int(next.w.y.value())).value()) : 0u;
+    const unsigned mask =
+        cfg_.masks ? unsigned(hls::mask_read(masks, wl, int(next.w.x.value()), int(next.w.y.value())).value()) : 0u;
     LevelStats& ls = st.level[std::size_t(wl)];
     ++ls.loaded;
     st.level[std::size_t(wl) + 1].masked += __builtin_popcount(mask);

@@ -12,9 +12,7 @@ Architecture Architecture::parse(const std::string& text, int raster_log2, const
   // raster_log2 = 0: the syntax only (the engine's options are checked before it sees a frame).
   const bool syntax_only = raster_log2 == 0;
   const int n = syntax_only ? 64 : raster_log2;
-  auto fail = [&](const std::string& rule) {
-    throw InputError("", option, "architecture '" + text + "': " + rule);
-  };
+  auto fail = [&](const std::string& rule) { throw InputError("", option, "architecture '" + text + "': " + rule); };
   int level = 1;
   std::size_t i = 0;
   bool tree_seen = false;
@@ -42,7 +40,8 @@ Architecture Architecture::parse(const std::string& text, int raster_log2, const
     if (count < 1) fail("every stage needs at least one level");
     if (tree_seen) fail("the quadtree of PEs (t) must be the last stage");
     if (level + count - 1 > n)
-      fail("the stages cover more than the n = " + std::to_string(n) + " levels of a " + std::to_string(1 << n) + "-line raster");
+      fail("the stages cover more than the n = " + std::to_string(n) + " levels of a " + std::to_string(1 << n) +
+           "-line raster");
     if (kind == 'p') {
       for (int k = 0; k < count; ++k) a.stages.push_back({'p', level + k, level + k});
     } else {
@@ -54,8 +53,8 @@ Architecture Architecture::parse(const std::string& text, int raster_log2, const
   if (a.stages.empty()) fail("empty");
   if (syntax_only) return a;
   if (level != n + 1)
-    fail("the stages cover " + std::to_string(level - 1) + " levels; a " + std::to_string(1 << n) + "-line raster has n = " +
-         std::to_string(n));
+    fail("the stages cover " + std::to_string(level - 1) + " levels; a " + std::to_string(1 << n) +
+         "-line raster has n = " + std::to_string(n));
   // Normalised text: consecutive pipeline stages merged into one "bp".
   std::string norm;
   for (std::size_t k = 0; k < a.stages.size(); ++k) {

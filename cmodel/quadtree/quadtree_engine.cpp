@@ -7,14 +7,13 @@
 #include <type_traits>
 #include <vector>
 
-#include "common/timing.hpp"
 #include "common/error.hpp"
+#include "common/timing.hpp"
 #include "quadtree/quadtree_frame.hpp"
 
 namespace cig {
 
 namespace {
-
 
 struct QuadOptions {
   std::string arch = "np";
@@ -36,7 +35,8 @@ class QuadPipeline {
   quad::Architecture check_raster(int n_pix) const {
     const int log2 = hls::raster_log2_of(n_pix);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2 || (1 << log2) != n_pix)
-      throw InputError("", "raster", "the quadtree engine renders rasters of 16 to 1024 lines, not " + std::to_string(n_pix));
+      throw InputError("", "raster",
+                       "the quadtree engine renders rasters of 16 to 1024 lines, not " + std::to_string(n_pix));
     return quad::Architecture::parse(options_.arch, log2);
   }
 
@@ -101,70 +101,70 @@ class QuadPipeline {
   void report(const ScreenFrame& frame, const quad::Architecture& arch, const quad::ArchModel<P>& model,
               const quad::FrontEndStats& fe, std::size_t pieces, const quad::ArchStats& st,
               nlohmann::ordered_json& rep) const {
-  rep["polygons"] = frame.polygons.size();
-  rep["polygons_degenerate"] = fe.degenerate;
-  rep["polygons_split"] = fe.split;
-  rep["pieces"] = pieces;
-  rep["bbox_edges"] = fe.bbox_edges;
-  rep["light_points"] = frame.light_points.size();
-  rep["light_samples"] = pixels_.light_samples();
-  nlohmann::ordered_json levels = nlohmann::ordered_json::array();
-  for (int l = 0; l <= arch.raster_log2; ++l) {
-    const quad::LevelStats& ls = st.level[std::size_t(l)];
-    levels.push_back({{"level", l},
-                      {"windows_loaded", ls.loaded},
-                      {"windows_all_masked", ls.loaded_all_masked},
-                      {"children_tested", ls.tested},
-                      {"children_masked", ls.masked},
-                      {"children_covered", ls.covered},
-                      {"children_full_opaque", ls.full_opaque}});
-  }
-  rep["levels"] = levels;
-  // Pieces that met a mask and never reached the pixels: hidden, discarded at that level.
-  std::vector<long> died(std::size_t(arch.raster_log2) + 1, 0);
-  long hidden = 0;
-  for (const quad::PieceStats& ps : st.pieces)
-    if (ps.met_mask && ps.pixel_records == 0) {
-      ++died[std::size_t(ps.deepest_level)];
-      ++hidden;
+    rep["polygons"] = frame.polygons.size();
+    rep["polygons_degenerate"] = fe.degenerate;
+    rep["polygons_split"] = fe.split;
+    rep["pieces"] = pieces;
+    rep["bbox_edges"] = fe.bbox_edges;
+    rep["light_points"] = frame.light_points.size();
+    rep["light_samples"] = pixels_.light_samples();
+    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+    for (int l = 0; l <= arch.raster_log2; ++l) {
+      const quad::LevelStats& ls = st.level[std::size_t(l)];
+      levels.push_back({{"level", l},
+                        {"windows_loaded", ls.loaded},
+                        {"windows_all_masked", ls.loaded_all_masked},
+                        {"children_tested", ls.tested},
+                        {"children_masked", ls.masked},
+                        {"children_covered", ls.covered},
+                        {"children_full_opaque", ls.full_opaque}});
     }
-  rep["pieces_hidden_by_masks"] = hidden;
-  rep["pieces_hidden_by_level"] = died;
-  rep["pixel_records"] = st.pixel_records;
-  rep["samples_written"] = pixels_.samples_written();
-  rep["pixels_full"] = st.pixels_full;
-  rep["mask_sets"] = st.mask_sets;
-  rep["mask_words_full"] = st.mask_words_full;
-  const double frame_ms = double(st.cycles) / (options_.clock_mhz * 1e3);
-  long long busy = 0;
-  for (long long b : st.pe_busy_cycles) busy += b;
-  nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
-  for (std::size_t s = 0; s < arch.stages.size(); ++s) {
-    long long sb = 0, ss = 0, pes = 0;
-    for (int p = 0; p < model.pe_count(); ++p)
-      if (model.pe_stage(p) == int(s)) {
-        sb += st.pe_busy_cycles[std::size_t(p)];
-        ss += st.pe_stall_cycles[std::size_t(p)];
-        ++pes;
+    rep["levels"] = levels;
+    // Pieces that met a mask and never reached the pixels: hidden, discarded at that level.
+    std::vector<long> died(std::size_t(arch.raster_log2) + 1, 0);
+    long hidden = 0;
+    for (const quad::PieceStats& ps : st.pieces)
+      if (ps.met_mask && ps.pixel_records == 0) {
+        ++died[std::size_t(ps.deepest_level)];
+        ++hidden;
       }
-    const quad::ArchStage& as = arch.stages[s];
-    per_stage.push_back({{"kind", std::string(1, as.kind)},
-                         {"levels", std::to_string(as.first_level) + ".." + std::to_string(as.last_level)},
-                         {"pes", pes},
-                         {"busy_cycles", sb},
-                         {"stall_cycles", ss},
-                         {"utilisation", st.cycles > 0 ? double(sb) / (double(st.cycles) * double(pes)) : 0.0}});
-  }
-  rep["cycles"] = {{"frame", st.cycles},
-                   {"per_piece", pieces == 0 ? 0.0 : double(st.cycles) / double(pieces)},
-                   {"clock_mhz", options_.clock_mhz},
-                   {"frame_ms", frame_ms},
-                   {"budget_ms", kFrameBudgetMs},
-                   {"fits_budget", frame_ms <= kFrameBudgetMs},
-                   {"pes", model.pe_count()},
-                   {"pe_utilisation", st.cycles > 0 ? double(busy) / (double(st.cycles) * model.pe_count()) : 0.0},
-                   {"input_wait_cycles", st.input_wait_cycles},
-                   {"stages", per_stage}};
+    rep["pieces_hidden_by_masks"] = hidden;
+    rep["pieces_hidden_by_level"] = died;
+    rep["pixel_records"] = st.pixel_records;
+    rep["samples_written"] = pixels_.samples_written();
+    rep["pixels_full"] = st.pixels_full;
+    rep["mask_sets"] = st.mask_sets;
+    rep["mask_words_full"] = st.mask_words_full;
+    const double frame_ms = double(st.cycles) / (options_.clock_mhz * 1e3);
+    long long busy = 0;
+    for (long long b : st.pe_busy_cycles) busy += b;
+    nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
+    for (std::size_t s = 0; s < arch.stages.size(); ++s) {
+      long long sb = 0, ss = 0, pes = 0;
+      for (int p = 0; p < model.pe_count(); ++p)
+        if (model.pe_stage(p) == int(s)) {
+          sb += st.pe_busy_cycles[std::size_t(p)];
+          ss += st.pe_stall_cycles[std::size_t(p)];
+          ++pes;
+        }
+      const quad::ArchStage& as = arch.stages[s];
+      per_stage.push_back({{"kind", std::string(1, as.kind)},
+                           {"levels", std::to_string(as.first_level) + ".." + std::to_string(as.last_level)},
+                           {"pes", pes},
+                           {"busy_cycles", sb},
+                           {"stall_cycles", ss},
+                           {"utilisation", st.cycles > 0 ? double(sb) / (double(st.cycles) * double(pes)) : 0.0}});
+    }
+    rep["cycles"] = {{"frame", st.cycles},
+                     {"per_piece", pieces == 0 ? 0.0 : double(st.cycles) / double(pieces)},
+                     {"clock_mhz", options_.clock_mhz},
+                     {"frame_ms", frame_ms},
+                     {"budget_ms", kFrameBudgetMs},
+                     {"fits_budget", frame_ms <= kFrameBudgetMs},
+                     {"pes", model.pe_count()},
+                     {"pe_utilisation", st.cycles > 0 ? double(busy) / (double(st.cycles) * model.pe_count()) : 0.0},
+                     {"input_wait_cycles", st.input_wait_cycles},
+                     {"stages", per_stage}};
   }
 
   QuadOptions options_;
@@ -193,7 +193,8 @@ class QuadEngine : public RasterEngine {
 std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin) {
   const char* engine = twin ? "quadtree-double" : "quadtree";
   if (options.snap)
-    throw InputError("", "--snap", "--snap applies to the float engine; the quadtree engine's formatter snaps by itself");
+    throw InputError("", "--snap",
+                     "--snap applies to the float engine; the quadtree engine's formatter snaps by itself");
   QuadOptions o;
   for (const auto& [key, value] : options.params) {
     if (key == "arch") {
@@ -209,23 +210,29 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
     } else if (key == "fifo") {
       char* end = nullptr;
       const long v = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || v < 1 || v > 64) throw InputError("", "--engine-opt", "fifo must be an integer 1..64");
+      if (value.empty() || *end != '\0' || v < 1 || v > 64)
+        throw InputError("", "--engine-opt", "fifo must be an integer 1..64");
       o.fifo = int(v);
     } else if (key == "clock") {
       char* end = nullptr;
       const double v = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0' || !(v > 0) || !(v < 1e6)) throw InputError("", "--engine-opt", "clock must be a frequency in MHz, > 0");
+      if (value.empty() || *end != '\0' || !(v > 0) || !(v < 1e6))
+        throw InputError("", "--engine-opt", "clock must be a frequency in MHz, > 0");
       o.clock_mhz = v;
     } else {
-      throw InputError("", "--engine-opt", std::string("engine '") + engine + "' takes no option '" + key +
-                                               (twin ? "' (known: arch, masks, fifo, clock)" : "' (known: arch, masks, format, fifo, clock)"));
+      throw InputError(
+          "", "--engine-opt",
+          std::string("engine '") + engine + "' takes no option '" + key +
+              (twin ? "' (known: arch, masks, fifo, clock)" : "' (known: arch, masks, format, fifo, clock)"));
     }
   }
   if (twin) return std::make_unique<QuadEngine<QuadDoubleArith>>(o, engine, "double");
   if (o.format == "coarse")
-    return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatCoarse>>>(o, engine, hls::QuadFormatCoarse::name);
+    return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatCoarse>>>(o, engine,
+                                                                                    hls::QuadFormatCoarse::name);
   if (o.format == "medium")
-    return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatMedium>>>(o, engine, hls::QuadFormatMedium::name);
+    return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatMedium>>>(o, engine,
+                                                                                    hls::QuadFormatMedium::name);
   return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatFine>>>(o, engine, hls::QuadFormatFine::name);
 }
 

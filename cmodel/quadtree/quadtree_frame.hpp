@@ -82,8 +82,8 @@ struct QuadFront<QuadDoubleArith> {
     t.fog.start = fog.start;
     t.fog.end = fog.end;
   }
-  static void light_colour(const ScreenLightPoint& l, const hls::FormattedPrimitive& f, const hls::QuadPixelTables<P>& t,
-                           typename P::Sample (&out)[3]) {
+  static void light_colour(const ScreenLightPoint& l, const hls::FormattedPrimitive& f,
+                           const hls::QuadPixelTables<P>& t, typename P::Sample (&out)[3]) {
     const TwinPrimitive tw = formatter_twin(l, 0);
     const double fog = P::fog_factor(t.fog, 1.0 / tw.v[0].z, hls::Int<10>(0));
     for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], tw.v[0].i, fog, t.fog_colour[c]);
@@ -161,7 +161,8 @@ class PixelFrame final : public PixelSink<P> {
         hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb);
         std::uint8_t* dst = image.at(px, py);
         for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(rgb[c].value());
-        std::copy(owners_.begin() + std::ptrdiff_t(pix * 16), owners_.begin() + std::ptrdiff_t(pix * 16 + 16), own.begin());
+        std::copy(owners_.begin() + std::ptrdiff_t(pix * 16), owners_.begin() + std::ptrdiff_t(pix * 16 + 16),
+                  own.begin());
         ids.id[pix] = majority_owner(own.data(), 16);
       }
   }

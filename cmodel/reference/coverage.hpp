@@ -63,8 +63,14 @@ struct CoverageSetup {
       } else {
         xa = xb = x[k] + (yr - y0) * (x[k1] - x[k]) / (y1 - y0);
       }
-      if (xa < xl) { xl = xa; el = k; }
-      if (xb > xr) { xr = xb; er = k; }
+      if (xa < xl) {
+        xl = xa;
+        el = k;
+      }
+      if (xb > xr) {
+        xr = xb;
+        er = k;
+      }
     }
   }
 };
@@ -128,8 +134,7 @@ struct RowSpan {
 // candidates, then sample(i, j) for each covered sample of that row.
 // Only rows row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
 template <class RowFn, class SampleFn>
-void for_each_covered_sample(const CoverageSetup& s, int m, int row_lo, int row_hi, RowFn&& row,
-                             SampleFn&& sample) {
+void for_each_covered_sample(const CoverageSetup& s, int m, int row_lo, int row_hi, RowFn&& row, SampleFn&& sample) {
   if (s.empty) return;
   const int j0 = int(std::max(double(row_lo), std::ceil(s.ymin)));
   const int j1 = int(std::min(double(row_hi), std::floor(s.ymax)));
@@ -149,7 +154,8 @@ void for_each_covered_sample(const CoverageSetup& s, int m, int row_lo, int row_
 
 template <class SampleFn>
 void for_each_covered_sample(const CoverageSetup& s, int m, SampleFn&& sample) {
-  for_each_covered_sample(s, m, 0, m - 1, [](int, const RowSpan&) {}, sample);
+  for_each_covered_sample(
+      s, m, 0, m - 1, [](int, const RowSpan&) {}, sample);
 }
 
 // Coverage setup of a screen polygon on a lattice.

@@ -12,7 +12,8 @@ class FloatEngine : public RasterEngine {
   explicit FloatEngine(const EngineOptions& o) : options_(o) {
     for (const auto& [key, value] : o.params) {
       if (key != "visibility")
-        throw InputError("", "--engine-opt", "engine 'float' takes no option '" + key + "' (it takes visibility=depth|priority)");
+        throw InputError("", "--engine-opt",
+                         "engine 'float' takes no option '" + key + "' (it takes visibility=depth|priority)");
       if (value != "depth" && value != "priority")
         throw InputError("", "--engine-opt", "visibility='" + value + "' is neither depth nor priority");
       visibility_ = value == "priority" ? Visibility::kPriority : Visibility::kDepth;
@@ -45,6 +46,8 @@ class FloatEngine : public RasterEngine {
 
 }  // namespace
 
-std::unique_ptr<RasterEngine> make_reference_engine(const EngineOptions& options) { return std::make_unique<FloatEngine>(options); }
+std::unique_ptr<RasterEngine> make_reference_engine(const EngineOptions& options) {
+  return std::make_unique<FloatEngine>(options);
+}
 
 }  // namespace cig

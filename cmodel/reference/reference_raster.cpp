@@ -11,7 +11,6 @@ namespace cig {
 
 namespace {
 
-
 // w = 1/Z as an affine function of sample coordinates, fitted through the vertex triple of
 // largest area (exact for a planar polygon; well conditioned).
 struct DepthPlane {
@@ -25,14 +24,20 @@ DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
   double best = -1;
   for (int k = 1; k < n; ++k) {
     double d = (c.x[k] - c.x[0]) * (c.x[k] - c.x[0]) + (c.y[k] - c.y[0]) * (c.y[k] - c.y[0]);
-    if (d > best) { best = d; i1 = k; }
+    if (d > best) {
+      best = d;
+      i1 = k;
+    }
   }
   int i2 = i1 == 1 ? 2 : 1;
   best = -1;
   for (int k = 1; k < n; ++k) {
     if (k == i1) continue;
     double a = std::abs((c.x[i1] - c.x[0]) * (c.y[k] - c.y[0]) - (c.y[i1] - c.y[0]) * (c.x[k] - c.x[0]));
-    if (a > best) { best = a; i2 = k; }
+    if (a > best) {
+      best = a;
+      i2 = k;
+    }
   }
   auto w = [&](int k) { return 1.0 / p.vertices[std::size_t(c.src[k])].zs; };
   const double ux = c.x[i1] - c.x[0], uy = c.y[i1] - c.y[0];
@@ -57,9 +62,7 @@ double edge_intensity(const CoverageSetup& c, const ScreenPolygon& p, int k, dou
   return i0 + t * (i1 - i0);
 }
 
-double fog_factor(const Fog& fog, double z) {
-  return std::clamp((z - fog.start) / (fog.end - fog.start), 0.0, 1.0);
-}
+double fog_factor(const Fog& fog, double z) { return std::clamp((z - fog.start) / (fog.end - fog.start), 0.0, 1.0); }
 
 }  // namespace
 
@@ -103,7 +106,8 @@ struct StripBins {
 
 namespace {
 
-RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats, Visibility visibility);
+RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
+                   Visibility visibility);
 
 }  // namespace
 
@@ -121,7 +125,8 @@ namespace {
 // plane, which lights are visible), then per strip of sample rows: polygons, light points, resolve.
 class ReferenceFrame {
  public:
-  ReferenceFrame(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats, Visibility visibility)
+  ReferenceFrame(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
+                 Visibility visibility)
       : frame_(frame),
         stats_(stats),
         visibility_(visibility),
@@ -199,9 +204,9 @@ class ReferenceFrame {
         ++stats_.polygons_empty;
         continue;
       }
-      depth_plane_[pi] = &depth_source == &frame_
-                             ? fit_depth_plane(coverage_[pi], frame_.polygons[pi])
-                             : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice_), frame_.polygons[pi]);
+      depth_plane_[pi] = &depth_source == &frame_ ? fit_depth_plane(coverage_[pi], frame_.polygons[pi])
+                                                  : fit_depth_plane(setup_coverage(depth_source.polygons[pi], lattice_),
+                                                                    frame_.polygons[pi]);
     }
   }
 

@@ -25,8 +25,8 @@ namespace cig {
 
 struct ReferenceStats {
   std::uint64_t polygons = 0, polygons_empty = 0;
-  std::uint64_t samples_covered = 0;   // covered samples (before the depth test)
-  std::uint64_t samples_written = 0;   // samples that passed the depth test when drawn
+  std::uint64_t samples_covered = 0;  // covered samples (before the depth test)
+  std::uint64_t samples_written = 0;  // samples that passed the depth test when drawn
   std::uint64_t light_points = 0, light_samples = 0;
   double raster_ms = 0, resolve_ms = 0;
 };
@@ -40,13 +40,15 @@ struct ReferenceStats {
 // engines' light point units). Fog uses the depth of the owning polygon either way.
 enum class Visibility { kDepth, kPriority };
 
-RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility = Visibility::kDepth);
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats,
+                             Visibility visibility = Visibility::kDepth);
 
 // The snapped reference: coverage (and Gouraud) from the vertices snapped to the formatter grid,
 // depth from the exact vertices of `exact` (the same polygons unsnapped). Snapping X and Y while
 // keeping each vertex's Z would tilt the 1/Z plane of every polygon by a different amount, so
 // near-coplanar surfaces (a marking 5 cm above a runway) would z-fight; the depth of a point of a
 // polygon does not depend on where the formatter rounds its vertices.
-RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility = Visibility::kDepth);
+RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats,
+                                     Visibility visibility = Visibility::kDepth);
 
 }  // namespace cig

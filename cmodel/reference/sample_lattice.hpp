@@ -21,7 +21,7 @@ constexpr int kSamplesPerSide = hls::kSamplesPerSide;
 constexpr int kSamplesPerPixel = hls::kSamplesPerPixel;
 
 struct SampleLattice {
-  int raster = 512;                 // N
+  int raster = 512;                                      // N
   int size() const { return raster * kSamplesPerSide; }  // samples per row and per column
   double units_per_pixel() const { return double(hls::kGridUnits) / raster; }
   // Grid units -> sample coordinates.

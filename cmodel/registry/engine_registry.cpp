@@ -7,7 +7,9 @@
 
 namespace cig {
 
-std::vector<std::string> engine_names() { return {"float", "segment", "segment-double", "quadtree", "quadtree-double"}; }
+std::vector<std::string> engine_names() {
+  return {"float", "segment", "segment-double", "quadtree", "quadtree-double"};
+}
 
 std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
   if (name == "float") return make_reference_engine(options);

@@ -65,15 +65,15 @@ ObjMesh parse_obj(const std::string& text, const std::string& file) {
         long n = long(mesh.vertices.size());
         long zero_based = v > 0 ? v - 1 : n + v;  // negative indices count back from the last vertex
         if (v == 0 || zero_based < 0 || zero_based >= n)
-          fail(file, line, "face index " + std::to_string(v) + " refers to no vertex (" +
-                               std::to_string(n) + " defined so far)");
+          fail(file, line,
+               "face index " + std::to_string(v) + " refers to no vertex (" + std::to_string(n) + " defined so far)");
         face.push_back(std::uint32_t(zero_based));
       }
       if (face.size() < 3)
         fail(file, line, "face has " + std::to_string(face.size()) + " vertices; at least 3 are required");
       if (face.size() > 4)
-        fail(file, line, "face has " + std::to_string(face.size()) +
-                             " vertices; only triangles and convex quads are accepted");
+        fail(file, line,
+             "face has " + std::to_string(face.size()) + " vertices; only triangles and convex quads are accepted");
       std::vector<glm::dvec3> pts;
       for (auto i : face) pts.push_back(mesh.vertices[i]);
       std::string rule = check_convex_planar(pts);

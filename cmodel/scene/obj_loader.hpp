@@ -16,7 +16,7 @@ namespace cig {
 struct ObjMesh {
   std::vector<glm::dvec3> vertices;
   std::vector<std::vector<std::uint32_t>> faces;  // zero-based, counter-clockwise from the front
-  std::size_t degenerate_faces = 0;  // zero-area faces skipped
+  std::size_t degenerate_faces = 0;               // zero-area faces skipped
 };
 
 // Reads a regular file of at most `max_bytes` (a directory, device or FIFO is refused before any

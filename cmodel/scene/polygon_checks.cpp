@@ -38,8 +38,7 @@ std::string convexity_2d(const std::vector<glm::dvec2>& p) {
   double diameter = 0;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) diameter = std::max(diameter, glm::length(p[i] - p[j]));
-  if (!(std::abs(area) > 1e-12 * diameter * diameter) || diameter == 0)
-    return "polygon is degenerate (zero area)";
+  if (!(std::abs(area) > 1e-12 * diameter * diameter) || diameter == 0) return "polygon is degenerate (zero area)";
   const double orientation = area > 0 ? 1.0 : -1.0;
   double total_turn = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -54,16 +53,14 @@ std::string convexity_2d(const std::vector<glm::dvec2>& p) {
       return "polygon is not convex (corner at vertex " + std::to_string(i) + " turns the wrong way)";
     total_turn += std::atan2(cross, dot);
   }
-  if (std::abs(total_turn - 2 * M_PI) > 1e-6)
-    return "polygon is not simple (its boundary winds more than once)";
+  if (std::abs(total_turn - 2 * M_PI) > 1e-6) return "polygon is not simple (its boundary winds more than once)";
   return {};
 }
 
 }  // namespace
 
 std::string check_convex_planar(const std::vector<glm::dvec3>& v) {
-  if (v.size() < 3)
-    return "polygon has " + std::to_string(v.size()) + " vertices; at least 3 are required";
+  if (v.size() < 3) return "polygon has " + std::to_string(v.size()) + " vertices; at least 3 are required";
   glm::dvec3 n = newell_normal(v);
   double len = glm::length(n);
   double diameter = 0;
@@ -100,8 +97,7 @@ std::string check_convex_planar(const std::vector<glm::dvec3>& v) {
 }
 
 std::string check_convex_2d(const std::vector<glm::dvec2>& v) {
-  if (v.size() < 3)
-    return "polygon has " + std::to_string(v.size()) + " vertices; at least 3 are required";
+  if (v.size() < 3) return "polygon has " + std::to_string(v.size()) + " vertices; at least 3 are required";
   // Screen polygons may repeat a vertex: clipping a polygon at a plane through one of its corners
   // leaves a zero-length edge that every engine draws as the polygon without it; the check applies
   // to the distinct corners.

@@ -24,9 +24,9 @@ glm::dmat3 body_to_world(double heading_deg, double pitch_deg, double roll_deg) 
   // Columns are the images of the body axes. M = Rz(-heading) * Rx(pitch) * Ry(roll).
   const double ch = std::cos(h), sh = std::sin(h), cp = std::cos(p), sp = std::sin(p);
   const double cr = std::cos(r), sr = std::sin(r);
-  glm::dmat3 rz(ch, -sh, 0, sh, ch, 0, 0, 0, 1);   // column-major: (x,y)->(x ch + y sh, -x sh + y ch)
-  glm::dmat3 rx(1, 0, 0, 0, cp, sp, 0, -sp, cp);   // forward (0,1,0) -> (0, cp, sp)
-  glm::dmat3 ry(cr, 0, -sr, 0, 1, 0, sr, 0, cr);   // right (1,0,0) -> (cr, 0, -sr): right wing down
+  glm::dmat3 rz(ch, -sh, 0, sh, ch, 0, 0, 0, 1);  // column-major: (x,y)->(x ch + y sh, -x sh + y ch)
+  glm::dmat3 rx(1, 0, 0, 0, cp, sp, 0, -sp, cp);  // forward (0,1,0) -> (0, cp, sp)
+  glm::dmat3 ry(cr, 0, -sr, 0, 1, 0, sr, 0, cr);  // right (1,0,0) -> (cr, 0, -sr): right wing down
   return rz * rx * ry;
 }
 

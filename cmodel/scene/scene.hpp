@@ -29,12 +29,12 @@ constexpr int kMaxRaster = 4096;
 // world points differ by at most 2 kMaxWorldCoordinate, their squares stay below 1e17, and the
 // projection divides by depths of at least kMinNear. Denormal inputs are valid numbers: they are
 // taken as the tiny values they are (0 for every purpose here), never as "not finite".
-constexpr double kMaxWorldCoordinate = 1e8;  // metres: positions, vertices, light points, offsets
+constexpr double kMaxWorldCoordinate = 1e8;                    // metres: positions, vertices, light points, offsets
 constexpr double kMinModelScale = 1e-6, kMaxModelScale = 1e6;  // OBJ subobject scale
-constexpr double kMaxAngleDeg = 360;  // heading, roll and channel yaw lie in [-360, 360]
-constexpr double kMinNear = 1e-3, kMaxNear = 1e4;  // near plane distance, metres
-constexpr double kMaxDistance = 1e9;  // fog start and end, bounding-sphere radius, metres
-constexpr double kMaxLightDiameter = 1e5;  // light-point diameter, metres
+constexpr double kMaxAngleDeg = 360;                           // heading, roll and channel yaw lie in [-360, 360]
+constexpr double kMinNear = 1e-3, kMaxNear = 1e4;              // near plane distance, metres
+constexpr double kMaxDistance = 1e9;                           // fog start and end, bounding-sphere radius, metres
+constexpr double kMaxLightDiameter = 1e5;                      // light-point diameter, metres
 // Screen depths of a polygon list: what the geometric processor can produce from the ranges above.
 constexpr double kMinScreenDepth = kMinNear, kMaxScreenDepth = kMaxDistance;
 // A model file larger than this is rejected before it is read (a setting: --max-model-mb).
@@ -43,8 +43,8 @@ constexpr long long kDefaultMaxModelBytes = 64ll << 20;
 struct Polygon {
   std::vector<std::uint32_t> indices;  // into Subobject::vertices, counter-clockwise seen from the front
   Rgb colour{1, 1, 1};
-  bool opaque = true;      // false: screen-door transparent (covers half the sub-pixel samples)
-  bool protect = false;    // protected from overload culling (area code 0 in the segment processor)
+  bool opaque = true;    // false: screen-door transparent (covers half the sub-pixel samples)
+  bool protect = false;  // protected from overload culling (area code 0 in the segment processor)
   // Self-lit polygons (sky, lit windows) carry their own vertex intensities instead of sun lighting.
   bool self_lit = false;
   std::vector<double> self_intensity;  // one per vertex when self_lit
@@ -54,15 +54,15 @@ struct Subobject {
   std::string name;
   std::vector<glm::dvec3> vertices;  // object coordinates
   std::vector<Polygon> polygons;
-  double crease_angle_deg = 50;      // vertex normals average only faces within this angle
-  glm::dvec3 centre{0};              // object coordinates; used for depth sorting of subobjects
+  double crease_angle_deg = 50;  // vertex normals average only faces within this angle
+  glm::dvec3 centre{0};          // object coordinates; used for depth sorting of subobjects
 };
 
 struct LightPoint {
   glm::dvec3 position{0};  // object coordinates
   double diameter = 1;     // metres
   Rgb colour{1, 1, 1};
-  double intensity = 1;    // [0, 1]
+  double intensity = 1;  // [0, 1]
 };
 
 struct Pose {

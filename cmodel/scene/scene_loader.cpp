@@ -11,9 +11,7 @@
 
 namespace cig {
 
-bool valid_raster_size(long long n) {
-  return n >= kMinRaster && n <= kMaxRaster && (n & (n - 1)) == 0;
-}
+bool valid_raster_size(long long n) { return n >= kMinRaster && n <= kMaxRaster && (n & (n - 1)) == 0; }
 
 namespace {
 
@@ -71,12 +69,10 @@ Polygon read_polygon(const JsonNode& n, const Subobject& sub, const PolygonDefau
   Polygon p;
   JsonNode idx = n.at("indices");
   std::size_t count = idx.array_size();
-  if (count < 3)
-    idx.fail("polygon has " + std::to_string(count) + " vertices; at least 3 are required");
+  if (count < 3) idx.fail("polygon has " + std::to_string(count) + " vertices; at least 3 are required");
   if (count > std::size_t(kMaxSceneVertices))
-    idx.fail("polygon has " + std::to_string(count) + " vertices; at most " +
-             std::to_string(kMaxSceneVertices) + " are accepted (clipping may add " +
-             std::to_string(kClipPlanes) + ")");
+    idx.fail("polygon has " + std::to_string(count) + " vertices; at most " + std::to_string(kMaxSceneVertices) +
+             " are accepted (clipping may add " + std::to_string(kClipPlanes) + ")");
   std::vector<glm::dvec3> pts;
   for (std::size_t i = 0; i < count; ++i) {
     long long v = idx[i].integer();
@@ -124,8 +120,8 @@ ObjMesh read_model(const JsonNode& n, const std::string& scene_file, const Scene
 }
 
 Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
-  n.allow_only({"name", "vertices", "polygons", "obj", "offset", "scale", "crease_angle", "colour",
-                "opaque", "protected"});
+  n.allow_only(
+      {"name", "vertices", "polygons", "obj", "offset", "scale", "crease_angle", "colour", "opaque", "protected"});
   Subobject s;
   if (auto nm = n.find("name")) s.name = nm->string();
   s.crease_angle_deg = n.find("crease_angle") ? n.at("crease_angle").number(0, 180) : 50.0;
@@ -164,7 +160,10 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const
     for (std::size_t i = 0; i < np; ++i) s.polygons.push_back(read_polygon(polys[i], s, d));
   }
   glm::dvec3 lo(1e300), hi(-1e300);
-  for (const auto& v : s.vertices) { lo = glm::min(lo, v); hi = glm::max(hi, v); }
+  for (const auto& v : s.vertices) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
   s.centre = 0.5 * (lo + hi);
   return s;
 }
@@ -201,8 +200,7 @@ Object read_object(const JsonNode& n, const std::string& scene_file, const Scene
     std::size_t nl = lps->array_size();
     for (std::size_t i = 0; i < nl; ++i) o.light_points.push_back(read_light_point((*lps)[i]));
   }
-  if (o.subobjects.empty() && o.light_points.empty())
-    n.fail("an object needs at least one subobject or light point");
+  if (o.subobjects.empty() && o.light_points.empty()) n.fail("an object needs at least one subobject or light point");
 
   // Bounding sphere in object coordinates: the scene manager culls with it, so it must enclose
   // every vertex and light point (a visible object must never be flagged invisible).
@@ -215,16 +213,22 @@ Object read_object(const JsonNode& n, const std::string& scene_file, const Scene
     for (std::size_t si = 0; si < o.subobjects.size(); ++si)
       for (const auto& v : o.subobjects[si].vertices)
         if (glm::length(v - o.sphere_centre) > o.sphere_radius + slack)
-          bs->fail("bounding sphere does not enclose every vertex (subobject " + std::to_string(si) +
-                   " reaches " + std::to_string(glm::length(v - o.sphere_centre)) + " from the centre)");
+          bs->fail("bounding sphere does not enclose every vertex (subobject " + std::to_string(si) + " reaches " +
+                   std::to_string(glm::length(v - o.sphere_centre)) + " from the centre)");
     for (const auto& l : o.light_points)
       if (glm::length(l.position - o.sphere_centre) > o.sphere_radius + slack)
         bs->fail("bounding sphere does not enclose every light point");
   } else {
     glm::dvec3 lo(1e300), hi(-1e300);
     for (const auto& s : o.subobjects)
-      for (const auto& v : s.vertices) { lo = glm::min(lo, v); hi = glm::max(hi, v); }
-    for (const auto& l : o.light_points) { lo = glm::min(lo, l.position); hi = glm::max(hi, l.position); }
+      for (const auto& v : s.vertices) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+      }
+    for (const auto& l : o.light_points) {
+      lo = glm::min(lo, l.position);
+      hi = glm::max(hi, l.position);
+    }
     o.sphere_centre = 0.5 * (lo + hi);
     double r = 0;
     for (const auto& s : o.subobjects)
@@ -252,7 +256,6 @@ void read_channels(const JsonNode& root, Scene& s) {
     ch.fov_deg = fov;
     s.channels.push_back(ch);
   }
-
 }
 
 // Lighting, fog and background.
@@ -274,7 +277,6 @@ void read_environment(const JsonNode& root, Scene& s) {
   }
   s.background = has_fog ? s.fog.colour : Rgb(0);
   if (auto b = root.find("background")) s.background = b->colour();
-
 }
 
 void read_observer(const JsonNode& root, Scene& s) {
@@ -294,7 +296,6 @@ void read_observer(const JsonNode& root, Scene& s) {
       k.at("frame").fail("keyframe frames must be strictly increasing");
     s.keyframes.push_back(kf);
   }
-
 }
 
 }  // namespace
@@ -304,8 +305,8 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
   JsonNode root(doc, file, "");
   if (root.at("format").string() != "cig-scene")
     root.at("format").fail("must be \"cig-scene\" (a polygon list uses \"cig-polys\")");
-  root.allow_only({"format", "version", "name", "raster", "view", "channels", "lighting", "fog",
-                   "background", "observer", "objects"});
+  root.allow_only({"format", "version", "name", "raster", "view", "channels", "lighting", "fog", "background",
+                   "observer", "objects"});
   if (root.at("version").integer() != 1) root.at("version").fail("only version 1 is supported");
 
   Scene s;
@@ -314,8 +315,8 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
   if (auto r = root.find("raster")) {
     long long n = r->integer();
     if (!valid_raster_size(n))
-      r->fail("raster size " + std::to_string(n) + " is not a power of two in [" +
-              std::to_string(kMinRaster) + ", " + std::to_string(kMaxRaster) + "]");
+      r->fail("raster size " + std::to_string(n) + " is not a power of two in [" + std::to_string(kMinRaster) + ", " +
+              std::to_string(kMaxRaster) + "]");
     s.raster = int(n);
   }
   if (auto v = root.find("view")) {

@@ -60,7 +60,10 @@ WorldSubobject place_subobject(const Subobject& s, const glm::dmat3& rot, const 
   }
 
   glm::dvec3 lo(1e300), hi(-1e300);
-  for (const auto& v : w.vertices) { lo = glm::min(lo, v); hi = glm::max(hi, v); }
+  for (const auto& v : w.vertices) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
   w.centre = 0.5 * (lo + hi);
   for (const auto& v : w.vertices) w.radius = std::max(w.radius, glm::length(v - w.centre));
   w.radius *= 1 + 1e-12;

@@ -15,12 +15,12 @@
 namespace cig {
 
 struct WorldSubobject {
-  std::vector<glm::dvec3> vertices;       // world coordinates
-  std::vector<glm::dvec3> face_normal;    // unit, world, one per polygon (front side)
-  std::vector<double> face_offset;        // plane: dot(face_normal, p) = face_offset
+  std::vector<glm::dvec3> vertices;         // world coordinates
+  std::vector<glm::dvec3> face_normal;      // unit, world, one per polygon (front side)
+  std::vector<double> face_offset;          // plane: dot(face_normal, p) = face_offset
   std::vector<std::uint32_t> first_corner;  // polygon i's corners: [first_corner[i], first_corner[i+1])
-  std::vector<double> corner_intensity;   // Gouraud intensity per polygon corner, [0, 1]
-  glm::dvec3 centre{0};                   // bounding sphere, world
+  std::vector<double> corner_intensity;     // Gouraud intensity per polygon corner, [0, 1]
+  glm::dvec3 centre{0};                     // bounding sphere, world
   double radius = 0;
 };
 

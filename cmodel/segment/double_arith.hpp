@@ -52,7 +52,9 @@ struct DoubleSegmentArith {
   static double step(double x, double s, int rows) { return x + rows * s; }
   static double lerp_x(double x0, double x1, int num, int den) { return x0 + (x1 - x0) * num / den; }
   // t clamped to the edge, as the fixed-point intensity_at/depth_at.
-  static double along_edge(double yb, double ye, int yt_quarter) { return std::clamp(0.25 * yt_quarter - yb, 0.0, ye - yb); }
+  static double along_edge(double yb, double ye, int yt_quarter) {
+    return std::clamp(0.25 * yt_quarter - yb, 0.0, ye - yb);
+  }
   static double intensity_at(double ib, double ie, double yb, double ye, int yt_quarter) {
     return std::clamp(ib + (ie - ib) * along_edge(yb, ye, yt_quarter) / (ye - yb), 0.0, 255.0);
   }
@@ -67,7 +69,9 @@ struct DoubleSegmentArith {
   static double ratio(double along, double inv) { return along > 0 ? std::min(1.0, along * inv) : 0.0; }
   static double lerp_intensity(double il, double ir, double t) { return il + (ir - il) * t; }
   static double lerp_depth(double zl, double zr, double t) { return zl + (zr - zl) * t; }
-  static double fog_factor(const FogTable& t, double z) { return std::clamp((z - t.start) / (t.end - t.start), 0.0, 1.0); }
+  static double fog_factor(const FogTable& t, double z) {
+    return std::clamp((z - t.start) / (t.end - t.start), 0.0, 1.0);
+  }
   static double shade(double c, double i) { return c * i / 256.0; }
   static double mix(double s, double fog, double f) { return s * (1 - f) + fog * f; }
   static double level_sample(double c) { return c; }

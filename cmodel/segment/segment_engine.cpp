@@ -6,8 +6,10 @@
 #include <numeric>
 #include <vector>
 
-#include "common/timing.hpp"
 #include "common/error.hpp"
+#include "common/timing.hpp"
+#include "formatter/fog_table.hpp"
+#include "formatter/formatter_twin.hpp"
 #include "hls/formatter/formatter.hpp"
 #include "hls/segment/edge_generator.hpp"
 #include "hls/segment/frame_memory.hpp"
@@ -15,13 +17,10 @@
 #include "hls/segment/segment_generator.hpp"
 #include "hls/segment/video_channel.hpp"
 #include "segment/double_arith.hpp"
-#include "formatter/fog_table.hpp"
-#include "formatter/formatter_twin.hpp"
 
 namespace cig {
 
 namespace {
-
 
 // Seed 001 timings, for the report's estimate of the segment processor's time per frame.
 constexpr double kEdgeFormationUs = 10.0;  // per edge, at most
@@ -49,10 +48,13 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
     hls::formatter_top(raw_from_light(l, id), out);
     return out;
   }
-  static int light_segments(const hls::FormattedPrimitive& l, int log2, hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
+  static int light_segments(const hls::FormattedPrimitive& l, int log2,
+                            hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
     return hls::generate_light_segments<P>(l, log2, hls::UInt<3>(0), out);
   }
-  static typename P::Level level(double unit) { return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255))); }
+  static typename P::Level level(double unit) {
+    return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255)));
+  }
   static void fog_table(typename P::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, false); }
 };
 
@@ -71,15 +73,21 @@ struct Front<DoubleSegmentArith> {
     out.id = hls::UInt<16>(t.id);
     return out;
   }
-  static hls::FormattedPrimitiveT<P> polygon(const ScreenPolygon& p, std::uint16_t id) { return convert(formatter_twin(p, id)); }
-  static hls::FormattedPrimitiveT<P> light(const ScreenLightPoint& l, std::uint16_t id) { return convert(formatter_twin(l, id)); }
+  static hls::FormattedPrimitiveT<P> polygon(const ScreenPolygon& p, std::uint16_t id) {
+    return convert(formatter_twin(p, id));
+  }
+  static hls::FormattedPrimitiveT<P> light(const ScreenLightPoint& l, std::uint16_t id) {
+    return convert(formatter_twin(l, id));
+  }
   // The twin of the coding table: the exact chord of the disc of diameter D at each row.
-  static int light_segments(const hls::FormattedPrimitiveT<P>& l, int log2, hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
+  static int light_segments(const hls::FormattedPrimitiveT<P>& l, int log2,
+                            hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
     const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2);
     const int rows = hls::kRowsPerLine << log2;
     const double cx = l.v[0].x, cy = l.v[0].y, d = l.d;  // half units: radius D/2 grid = D half
     int count = 0;
-    for (int row = std::max(0, P::first_row_at_or_after(g, cy - 0.5 * d)); row < rows && count < hls::kMaxLightSegments; ++row) {
+    for (int row = std::max(0, P::first_row_at_or_after(g, cy - 0.5 * d)); row < rows && count < hls::kMaxLightSegments;
+         ++row) {
       const double dy = g.sample_half(row) - 2 * cy;
       if (std::abs(dy) > d) break;
       const double w = std::sqrt(d * d - dy * dy);
@@ -123,8 +131,10 @@ class SegmentPipeline {
     const int n = frame.raster;
     const int log2 = hls::raster_log2_of(n);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2)
-      throw InputError("", "raster", "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
-    if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) || frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
+      throw InputError("", "raster",
+                       "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
+    if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) ||
+        frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons",
                        "the segment engine takes at most 65536 polygons and 65536 light points per channel; frame " +
                            std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
@@ -285,12 +295,10 @@ class SegmentPipeline {
                           {"segments_odd", st.counts.segments[1][c].value()},
                           {"polygons_dropped", st.dropped_by_code[c]}});
     // per_area_code[0] counts the protected polygons' segments and the light points'.
-    rep["overload"] = {{"bank_capacity", hls::kSegmentBankWords},
-                       {"threshold", st.threshold},
-                       {"light_segments_even", st.light_segments_field[0]},
-                       {"light_segments_odd", st.light_segments_field[1]},
-                       {"polygons_dropped", st.dropped_overload},
-                       {"per_area_code", per_code}};
+    rep["overload"] = {
+        {"bank_capacity", hls::kSegmentBankWords},           {"threshold", st.threshold},
+        {"light_segments_even", st.light_segments_field[0]}, {"light_segments_odd", st.light_segments_field[1]},
+        {"polygons_dropped", st.dropped_overload},           {"per_area_code", per_code}};
     rep["segments"] = {{"polygon", st.polygon_segments},
                        {"light", st.light_segments},
                        {"stored_even", segment_memory_->used[0]},
@@ -343,7 +351,8 @@ class SegmentEngine : public RasterEngine {
 
 std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, bool twin) {
   if (options.snap)
-    throw InputError("", "--snap", "--snap applies to the float engine; the segment engine's formatter snaps by itself");
+    throw InputError("", "--snap",
+                     "--snap applies to the float engine; the segment engine's formatter snaps by itself");
   std::string format = "fine";
   bool quad = false;
   const char* engine = twin ? "segment-double" : "segment";
@@ -352,20 +361,25 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
       format = value;
     } else if (key == "x-rows") {
       if (value != "4" && value != "2")
-        throw InputError("", "--engine-opt", "x-rows must be 4 (X at every sample row) or 2 (the seed's four-X segment)");
+        throw InputError("", "--engine-opt",
+                         "x-rows must be 4 (X at every sample row) or 2 (the seed's four-X segment)");
       quad = value == "2";
     } else {
-      throw InputError("", "--engine-opt", std::string("engine '") + engine + "' takes no option '" + key +
-                                               (twin ? "' (known: x-rows)" : "' (known: format, x-rows)"));
+      throw InputError("", "--engine-opt",
+                       std::string("engine '") + engine + "' takes no option '" + key +
+                           (twin ? "' (known: x-rows)" : "' (known: format, x-rows)"));
     }
   }
   if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad);
   if (format == "coarse")
-    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(engine, hls::SegmentFormatCoarse::name, quad);
+    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(
+        engine, hls::SegmentFormatCoarse::name, quad);
   if (format == "medium")
-    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(engine, hls::SegmentFormatMedium::name, quad);
+    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(
+        engine, hls::SegmentFormatMedium::name, quad);
   if (format == "fine")
-    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(engine, hls::SegmentFormatFine::name, quad);
+    return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
+        engine, hls::SegmentFormatFine::name, quad);
   throw InputError("", "--engine-opt", "format '" + format + "' is not one of coarse, medium, fine");
 }
 

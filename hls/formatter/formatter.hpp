@@ -63,7 +63,7 @@ inline bool is_nan(const Binary64& f) { return is_special(f) && f.frac != UInt<5
 
 // floor(x * Mult * 2^K) of the binary64 x, saturated to Int<62> ([-2^61, 2^61 - 1]).
 struct ScaledFloor {
-  Int<62> value;     // 0 for NaN
+  Int<62> value;  // 0 for NaN
   bool nan = false;
 };
 
@@ -86,8 +86,8 @@ inline ScaledFloor scaled_floor(const UInt<64>& bits) {
   const UInt<61> p = sig * UInt<8>(Mult);                // integer, exact: < 2^53 * 2^8
   const Int<15> sh = to_signed(ee) + Int<14>(K - 1075);  // integer; x * Mult * 2^K = p * 2^sh
 
-  UInt<61> q = p;        // integer |x * Mult * 2^K|, truncated toward zero by the right shift
-  bool sticky = false;   // nonzero bits shifted out on the right (makes floor of a negative exact)
+  UInt<61> q = p;       // integer |x * Mult * 2^K|, truncated toward zero by the right shift
+  bool sticky = false;  // nonzero bits shifted out on the right (makes floor of a negative exact)
   bool overflow = false;
   if (sh >= Int<2>(0)) {
     // Left barrel shifter (sh < 16): a bit pushed past bit 60 overflows. sh >= 16 always
@@ -155,18 +155,18 @@ inline UInt<W> scaled_round(const UInt<64>& bits) {
 //   exact because the threshold is a multiple of 2^-50:
 //     X = clamp(k0 + carry(frac50(w) + 2^(j-3)), 0, 4095)
 inline UInt<12> grid_coordinate(const UInt<64>& s_bits) {
-  const ScaledFloor t = scaled_floor<1, 61>(s_bits);     // Int<62>: t, 50 fractional bits, floor, sat.
-  const Int<63> kOffsetHalf(4095LL << 49);               // (2047 + 1/2), 50 fractional bits, exact
-  const Int<64> w = t.value + kOffsetHalf;               // v + 1/2: 14 integer (sign incl.) + 50 frac, exact
-  const Int<14> k0 = shr<50>(w);                         // integer -1..4095: floor(v + 1/2)
-  const UInt<50> frac = w.slice<49, 0>();                // fraction of v + 1/2, 2^-50 units
-  UInt<9> h(0);  // 2^(j-3) in 2^-50 units, j = floor(log2 k0); 0 below 8
+  const ScaledFloor t = scaled_floor<1, 61>(s_bits);  // Int<62>: t, 50 fractional bits, floor, sat.
+  const Int<63> kOffsetHalf(4095LL << 49);            // (2047 + 1/2), 50 fractional bits, exact
+  const Int<64> w = t.value + kOffsetHalf;            // v + 1/2: 14 integer (sign incl.) + 50 frac, exact
+  const Int<14> k0 = shr<50>(w);                      // integer -1..4095: floor(v + 1/2)
+  const UInt<50> frac = w.slice<49, 0>();             // fraction of v + 1/2, 2^-50 units
+  UInt<9> h(0);                                       // 2^(j-3) in 2^-50 units, j = floor(log2 k0); 0 below 8
   for (int j = 3; j < 12; ++j) {
     if (k0 >= Int<14>(1 << j)) h = UInt<9>(1 << (j - 3));
   }
-  const UInt<51> frac_plus = frac + h;                   // exact; bit 50 set iff v >= k0 + 1/2 - h
+  const UInt<51> frac_plus = frac + h;                        // exact; bit 50 set iff v >= k0 + 1/2 - h
   const Int<15> k = k0 + UInt<1>(frac_plus.bit(50) ? 1 : 0);  // integer, exact
-  return t.nan ? UInt<12>(0) : saturate_unsigned<12>(k);  // clamp 0..4095
+  return t.nan ? UInt<12>(0) : saturate_unsigned<12>(k);      // clamp 0..4095
 }
 
 // Z of eq. 1: binary64 -> e8m7 (bias 127), mantissa rounded to nearest, ties to even.
@@ -184,10 +184,10 @@ inline ZFloat to_zfloat(const UInt<64>& bits) {
     return z;
   }
   const Int<13> e = to_signed(f.exp) - Int<11>(1023 - ZFloat::kBias);  // integer re-bias: E = exp - 896
-  const UInt<7> m = f.frac.slice<51, 45>();               // top 7 fraction bits (truncated)
+  const UInt<7> m = f.frac.slice<51, 45>();                            // top 7 fraction bits (truncated)
   const bool guard = f.frac.bit(44);
   const bool sticky = f.frac.slice<43, 0>() != UInt<1>(0);
-  const bool round_up = guard && (sticky || m.bit(0));  // nearest, ties to even
+  const bool round_up = guard && (sticky || m.bit(0));             // nearest, ties to even
   const Int<22> code = shl<7>(e) + m + UInt<1>(round_up ? 1 : 0);  // integer E*128 + m + up, exact
   z.bits = saturate_unsigned<15>(code);  // < 0: below 2^-127 -> 0; > 0x7FFF: beyond the largest
   return z;

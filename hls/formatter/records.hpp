@@ -16,7 +16,7 @@
 
 CIG_HLS_BEGIN_NAMESPACE
 
-constexpr int kMaxVertices = 16;        // per polygon, after clipping (cmodel kMaxScreenVertices)
+constexpr int kMaxVertices = 16;         // per polygon, after clipping (cmodel kMaxScreenVertices)
 constexpr int kMaxPolygonIds = 1 << 16;  // polygons (and lights) per channel and frame: UInt<16> ids
 
 // ---- Formatter input: the geometric processor's floating-point values -------------------------
@@ -28,12 +28,12 @@ struct RawVertex {
 
 struct RawPrimitive {
   bool is_light = false;
-  UInt<5> n;                    // vertices (polygon: 3..16; light: the centre is v[0])
+  UInt<5> n;  // vertices (polygon: 3..16; light: the centre is v[0])
   RawVertex v[kMaxVertices];
-  UInt<64> ds;                  // light diameter Ds in [0, 1]
-  UInt<64> colour[3];           // R, G, B in [0, 1]
+  UInt<64> ds;         // light diameter Ds in [0, 1]
+  UInt<64> colour[3];  // R, G, B in [0, 1]
   bool opaque = true, protect = false;
-  UInt<16> id;                  // index in the frame's polygon (or light) list
+  UInt<16> id;  // index in the frame's polygon (or light) list
 };
 
 // ---- Formatter output (eq. 1) -----------------------------------------------------------------
@@ -52,8 +52,8 @@ struct FormattedPrimitiveT {
   bool is_light = false;
   UInt<5> n;
   FormattedVertexT<P> v[kMaxVertices];
-  typename P::Diameter d;          // light diameter, grid units 0..7
-  typename P::Level colour[3];     // 0..255
+  typename P::Diameter d;       // light diameter, grid units 0..7
+  typename P::Level colour[3];  // 0..255
   bool opaque = true, protect = false;
   UInt<16> id;
 };

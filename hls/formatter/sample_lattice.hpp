@@ -22,17 +22,17 @@
 CIG_HLS_BEGIN_NAMESPACE
 
 // ---- Formatter grid (eq. 1) ---------------------------------------------------------------------
-constexpr int kGridScaleLog2 = 11;      // X = 2^11 Xs + 2047
-constexpr int kGridUnits = 4096;        // grid units across the screen
+constexpr int kGridScaleLog2 = 11;  // X = 2^11 Xs + 2047
+constexpr int kGridUnits = 4096;    // grid units across the screen
 constexpr int kGridOffset = 2047;
 constexpr int kGridMax = kGridUnits - 1;  // formatted X, Y: UInt<12>, 0..4095
-constexpr int kMaxLightDiameter = 7;    // D = 2048 Ds clamped to 0..7 grid units: UInt<3>
+constexpr int kMaxLightDiameter = 7;      // D = 2048 Ds clamped to 0..7 grid units: UInt<3>
 
 // ---- Raster limits ------------------------------------------------------------------------------
-constexpr int kMinRasterLog2 = 4;       // N >= 16
-constexpr int kMaxRasterLog2 = 10;      // N <= 1024 (H_k stays an integer)
+constexpr int kMinRasterLog2 = 4;   // N >= 16
+constexpr int kMaxRasterLog2 = 10;  // N <= 1024 (H_k stays an integer)
 constexpr int kMaxLines = 1 << kMaxRasterLog2;
-constexpr int kSamplesPerSide = 4;      // 4 x 4 samples per pixel
+constexpr int kSamplesPerSide = 4;  // 4 x 4 samples per pixel
 constexpr int kSamplesPerPixel = kSamplesPerSide * kSamplesPerSide;
 constexpr int kMaxLatticeSize = kMaxLines * kSamplesPerSide;  // samples per row or column, largest raster
 

@@ -37,7 +37,7 @@ inline FogFactor fog_lookup(const FogTable& t, const ZFloat& code) { return t.f[
 // integer bits (0..255.x).
 template <class Intensity>
 inline SampleColour shade(const SampleLevel& c, const Intensity& i) {
-  const auto p = UFixed<8, 8>::from_raw(c) * i;  // UFixed<8 + W, 16>: c * I, exact
+  const auto p = UFixed<8, 8>::from_raw(c) * i;                           // UFixed<8 + W, 16>: c * I, exact
   return SampleColour(UFixed<decltype(p)::width, 8>::from_raw(p.raw()));  // / 256
 }
 

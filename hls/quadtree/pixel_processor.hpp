@@ -24,20 +24,20 @@ CIG_HLS_BEGIN_NAMESPACE
 
 template <class P>
 struct QuadPixelState {
-  UInt<16> owned;                 // samples some polygon owns
-  typename P::Accum sum[3];       // the owned samples' colours, summed
+  UInt<16> owned;            // samples some polygon owns
+  typename P::Accum sum[3];  // the owned samples' colours, summed
 };
 
 template <class P>
 struct QuadLightCover {
-  UInt<16> mask;                  // samples a light covers
-  UInt<17> priority[kSamplesPerPixel];                 // that light's priority position
-  typename P::Sample colour[kSamplesPerPixel][3];      // its colour at the sample
+  UInt<16> mask;                                   // samples a light covers
+  UInt<17> priority[kSamplesPerPixel];             // that light's priority position
+  typename P::Sample colour[kSamplesPerPixel][3];  // its colour at the sample
 };
 
 template <class P>
 struct QuadPixelTables {
-  typename P::FogTable fog;       // indexed by the e8m7 code of 1/Z (fixed policy)
+  typename P::FogTable fog;  // indexed by the e8m7 code of 1/Z (fixed policy)
   SampleLevel fog_colour[3];
   SampleLevel background[3];
 };
@@ -62,8 +62,10 @@ UInt<16> quad_pixel_process(const QuadWindow<P>& px, const UInt<16>& samples, co
     if (light_shows) {
       for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
     } else {
-      const typename P::Param vi = P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
-      const typename P::Param vw = P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth], poly.dp_dj[kParamInverseDepth], di, dj);
+      const typename P::Param vi =
+          P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
+      const typename P::Param vw = P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth],
+                                                poly.dp_dj[kParamInverseDepth], di, dj);
       const typename P::Intensity in = P::intensity(vi);
       const typename P::FogFactorType f = P::fog_factor(t.fog, vw, poly.w_exponent);
       for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
@@ -91,7 +93,8 @@ void quad_pixel_resolve(const QuadPixelState<P>& st, const QuadPixelTables<P>& t
 
 // Top function (HLS): one pixel record into the pixel's state, default format.
 inline UInt<16> quadtree_pixel_top(const QuadWindow<DefaultQuadArith>& px, UInt<16> samples,
-                                   const QuadPixelTables<DefaultQuadArith>& t, const QuadLightCover<DefaultQuadArith>& lights,
+                                   const QuadPixelTables<DefaultQuadArith>& t,
+                                   const QuadLightCover<DefaultQuadArith>& lights,
                                    QuadPixelState<DefaultQuadArith>& st) {
   return quad_pixel_process(px, samples, t, lights, st);
 }

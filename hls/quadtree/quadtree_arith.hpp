@@ -39,12 +39,12 @@ struct QuadFixedArith {
   static constexpr int V = Fmt::V;
   using VertexI = UInt<8>;
   using VertexZ = ZFloat;
-  using Value = Int<V + 1>;                         // vertex value, value units: I 0..255, W 0..2^MW
-  using Gradient = Int<Fmt::kGradientWidth>;        // D, E: G fractional bits, |.| < 2^V
-  using Param = Int<Fmt::kParamWidth>;              // F, f: G fractional bits
-  using NewellSum = Int<V + 19>;                    // |nx|, |ny| < 8 * 2^13 * 2^(V + 1) = 2^(V + 17)
+  using Value = Int<V + 1>;                   // vertex value, value units: I 0..255, W 0..2^MW
+  using Gradient = Int<Fmt::kGradientWidth>;  // D, E: G fractional bits, |.| < 2^V
+  using Param = Int<Fmt::kParamWidth>;        // F, f: G fractional bits
+  using NewellSum = Int<V + 19>;              // |nx|, |ny| < 8 * 2^13 * 2^(V + 1) = 2^(V + 17)
   using Sample = SampleColour;
-  using Accum = UFixed<20, 12>;                     // a pixel's 16 samples summed: exact
+  using Accum = UFixed<20, 12>;  // a pixel's 16 samples summed: exact
   using FogTable = ::cig::hls::FogTable;
   using FogFactorType = FogFactor;
 
@@ -59,21 +59,16 @@ struct QuadFixedArith {
     const int sh = MW + 7 + e_min - int(z.exponent().value());
     if (sh < 0) return Value(0);
     const Int<29> one = Int<29>(std::int64_t{1}) << sh;  // sh <= MW + 7 <= 27
-    const UFixed<V, V, Quant::kRound, Overflow::kSat> q =
-        fixed_div<UFixed<V, V, Quant::kRound, Overflow::kSat>>(Fixed<29, 29>::from_raw(one),
-                                                               UFixed<8, 8>::from_raw(z.significand()));
+    const UFixed<V, V, Quant::kRound, Overflow::kSat> q = fixed_div<UFixed<V, V, Quant::kRound, Overflow::kSat>>(
+        Fixed<29, 29>::from_raw(one), UFixed<8, 8>::from_raw(z.significand()));
     return Value(q.raw().value());
   }
-  using SumValue = Int<V + 5>;                       // sum of up to 8 vertex values
+  using SumValue = Int<V + 5>;  // sum of up to 8 vertex values
   static int depth_exponent(const VertexZ& z) { return int(z.exponent().value()); }
   // nx term (hy_k - hy_k+1)(v_k + v_k+1) and ny term (v_k - v_k+1)(hx_k + hx_k+1), exact:
   // |dhy| < 2^13, |hx_k + hx_k+1| < 2^14, |v| <= 2^(V-1) for W and < 2^8 for I.
-  static NewellSum newell_x(const Int<15>& dhy, const Value& v0, const Value& v1) {
-    return NewellSum(dhy * (v0 + v1));
-  }
-  static NewellSum newell_y(const Int<15>& shx, const Value& v0, const Value& v1) {
-    return NewellSum(shx * (v0 - v1));
-  }
+  static NewellSum newell_x(const Int<15>& dhy, const Value& v0, const Value& v1) { return NewellSum(dhy * (v0 + v1)); }
+  static NewellSum newell_y(const Int<15>& shx, const Value& v0, const Value& v1) { return NewellSum(shx * (v0 - v1)); }
   static NewellSum newell_add(const NewellSum& a, const NewellSum& t) { return wrap<V + 19>(a + t); }
   static SumValue value_add(const SumValue& a, const Value& v) { return wrap<V + 5>(a + v); }
 
@@ -87,23 +82,24 @@ struct QuadFixedArith {
     using GradientFormat = Fixed<Fmt::kGradientWidth, Fmt::kGradientWidth - G, Quant::kRound, Overflow::kSat>;
     const Int<V + 26> nxs = Int<V + 26>(-(nx.value()) * (std::int64_t{1} << ls));  // -nx s, exact
     const Int<V + 26> nys = Int<V + 26>(-(ny.value()) * (std::int64_t{1} << ls));
-    const GradientFormat dg = fixed_div<GradientFormat>(Fixed<V + 26, V + 26>::from_raw(nxs), Fixed<34, 34>::from_raw(nz));
-    const GradientFormat eg = fixed_div<GradientFormat>(Fixed<V + 26, V + 26>::from_raw(nys), Fixed<34, 34>::from_raw(nz));
+    const GradientFormat dg =
+        fixed_div<GradientFormat>(Fixed<V + 26, V + 26>::from_raw(nxs), Fixed<34, 34>::from_raw(nz));
+    const GradientFormat eg =
+        fixed_div<GradientFormat>(Fixed<V + 26, V + 26>::from_raw(nys), Fixed<34, 34>::from_raw(nz));
     d_out = dg.raw();
     e_out = eg.raw();
     // numerator in units of 2^-(G + 7): sum v * 2^(G + 7) - D_raw si7 - E_raw sj7 (exact).
     const Int<V + 12 + G> sv = shl<G + 7>(sum_v);
     const Int<63> num = Int<63>(sv.value() - d_out.value() * si7.value() - e_out.value() * sj7.value());
     using OffsetFormat = Fixed<Fmt::kParamWidth, Fmt::kParamWidth - G, Quant::kRound, Overflow::kSat>;
-    const OffsetFormat f = fixed_div<OffsetFormat>(Fixed<63, 63 - G - 7>::from_raw(num), Fixed<5, 5>::from_raw(Int<5>(n)));
+    const OffsetFormat f =
+        fixed_div<OffsetFormat>(Fixed<63, 63 - G - 7>::from_raw(num), Fixed<5, 5>::from_raw(Int<5>(n)));
     f_out = f.raw();
   }
 
   // The parameter recurrence of seed 004: f + 2^k D (and likewise E), exact. With k <= 12 the
   // shifted gradient has V + 13 + G bits, below the parameter's V + 16 + G.
-  static Param step(const Param& f, const Gradient& g, int k) {
-    return wrap<Fmt::kParamWidth>(f + (Param(g) << k));
-  }
+  static Param step(const Param& f, const Gradient& g, int k) { return wrap<Fmt::kParamWidth>(f + (Param(g) << k)); }
   // The value at sample (di, dj) of a pixel whose top-left sample has value f (the pixel
   // processor's 16 sample lanes), exact.
   static Param at_sample(const Param& f, const Gradient& d, const Gradient& e, int di, int dj) {

@@ -37,8 +37,8 @@ constexpr int kQuadMaxLevels = kMaxRasterLog2;  // levels 0..n, n = log2 N <= 10
 // watertight under the tie rule, so the union covers exactly the polygon's samples); bounding-box
 // edges (setup.hpp) are added only where slots remain.
 constexpr int kQuadMaxEdges = 8;
-constexpr int kQuadMaxPieces = 3;       // 16 vertices -> pieces of 8, 8 and 4 vertices
-constexpr int kQuadParams = 2;          // surface parameters: intensity I and inverse depth W = 1/Z
+constexpr int kQuadMaxPieces = 3;  // 16 vertices -> pieces of 8, 8 and 4 vertices
+constexpr int kQuadParams = 2;     // surface parameters: intensity I and inverse depth W = 1/Z
 constexpr int kParamIntensity = 0;
 constexpr int kParamInverseDepth = 1;
 constexpr int kQuadChildren = 4;
@@ -95,13 +95,13 @@ using QuadFormatDefault = QuadFormatFine;
 // The polygon constants every window of the polygon carries (one record = one convex piece).
 template <class P>
 struct QuadPolygon {
-  UInt<16> id;                      // index in the frame's polygon list (priority order)
-  bool opaque = true;               // non-opaque: screen door, never sets a mask
-  SampleLevel colour[3];            // 0..255
-  UInt<4> edge_count;               // used edge slots (the rest never reject: A = B = C = 0)
+  UInt<16> id;            // index in the frame's polygon list (priority order)
+  bool opaque = true;     // non-opaque: screen door, never sets a mask
+  SampleLevel colour[3];  // 0..255
+  UInt<4> edge_count;     // used edge slots (the rest never reject: A = B = C = 0)
   EdgeGradient a[kQuadMaxEdges], b[kQuadMaxEdges];
   typename P::Gradient dp_di[kQuadParams], dp_dj[kQuadParams];
-  Int<10> w_exponent;               // W value units: 1/Z = value * 2^w_exponent
+  Int<10> w_exponent;  // W value units: 1/Z = value * 2^w_exponent
 };
 
 // A window of level `level` with address (x, y): the state a PE reads.
@@ -109,8 +109,8 @@ template <class P>
 struct QuadWindow {
   UInt<4> level;
   UInt<10> x, y;
-  EdgeValue d[kQuadMaxEdges];       // per edge: the maximum of E over the window's samples
-  typename P::Param f[kQuadParams]; // per parameter: the value at the window's top-left sample
+  EdgeValue d[kQuadMaxEdges];        // per edge: the maximum of E over the window's samples
+  typename P::Param f[kQuadParams];  // per parameter: the value at the window's top-left sample
   QuadPolygon<P> poly;
 };
 
@@ -127,7 +127,7 @@ struct QuadChild {
 // Setup output: up to three pieces, each a polygon record and its level-0 window.
 template <class P>
 struct QuadSetup {
-  UInt<2> pieces;                   // 0: degenerate (zero area), dropped
+  UInt<2> pieces;  // 0: degenerate (zero area), dropped
   QuadWindow<P> root[kQuadMaxPieces];
   UInt<3> bbox_edges[kQuadMaxPieces];  // bounding-box edges added per piece (statistics)
 };

@@ -39,14 +39,14 @@ CIG_HLS_BEGIN_NAMESPACE
 // Setup input: positions on the formatter grid, values as the policy reads them.
 template <class P>
 struct QuadVertexInput {
-  UInt<12> x, y;                // formatter grid units (eq. 1)
-  typename P::VertexI i;        // intensity
-  typename P::VertexZ z;        // depth
+  UInt<12> x, y;          // formatter grid units (eq. 1)
+  typename P::VertexI i;  // intensity
+  typename P::VertexZ z;  // depth
 };
 
 template <class P>
 struct QuadPrimitiveInput {
-  UInt<5> n;                    // 3..16
+  UInt<5> n;  // 3..16
   QuadVertexInput<P> v[kMaxVertices];
   SampleLevel colour[3];
   bool opaque = true;
@@ -57,9 +57,9 @@ namespace quad_detail {
 
 // The edge function of the directed edge (hx0, hy0) -> (hx1, hy1) on the sample lattice, with
 // the tie rule folded into C.
-inline void edge_line(int hx0, int hy0, int hx1, int hy1, int sigma, int ls, int o, EdgeGradient& a,
-                      EdgeGradient& b, Int<29>& c) {
-  const int dx = hx1 - hx0, dy = hy1 - hy0;           // |.| <= 8190
+inline void edge_line(int hx0, int hy0, int hx1, int hy1, int sigma, int ls, int o, EdgeGradient& a, EdgeGradient& b,
+                      Int<29>& c) {
+  const int dx = hx1 - hx0, dy = hy1 - hy0;  // |.| <= 8190
   const int av = -sigma * dy * (1 << ls), bv = sigma * dx * (1 << ls);
   const std::int64_t cv = std::int64_t(sigma) * (std::int64_t(dx) * (o - hy0) - std::int64_t(dy) * (o - hx0));
   const bool owns_ties = av > 0 || (av == 0 && bv > 0);
@@ -144,10 +144,21 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
     if (on_side[side]) continue;  // the polygon's own edge is that side of the box
     const int t = extreme[side] - o;
     int av = 0, bv = 0, cv = 0;
-    if (side == 0) { av = 1; cv = -ceil_shift(t, ls); }        // i >= ceil((hx_min - o) / s)
-    else if (side == 1) { av = -1; cv = floor_shift(t, ls); }  // i <= floor((hx_max - o) / s)
-    else if (side == 2) { bv = 1; cv = -ceil_shift(t, ls); }
-    else { bv = -1; cv = floor_shift(t, ls); }
+    if (side == 0) {
+      av = 1;
+      cv = -ceil_shift(t, ls);
+    }  // i >= ceil((hx_min - o) / s)
+    else if (side == 1) {
+      av = -1;
+      cv = floor_shift(t, ls);
+    }  // i <= floor((hx_max - o) / s)
+    else if (side == 2) {
+      bv = 1;
+      cv = -ceil_shift(t, ls);
+    } else {
+      bv = -1;
+      cv = floor_shift(t, ls);
+    }
     poly.a[used] = EdgeGradient(av);
     poly.b[used] = EdgeGradient(bv);
     root.d[used] = root_coverage(poly.a[used], poly.b[used], Int<29>(cv), raster_log2);

@@ -17,8 +17,8 @@ namespace detail {
 
 // Appends the edge a -> b (a above b) to a chain when a sample row crosses it.
 template <class P, class Q>
-void add_chain_edge(const FormattedVertexT<Q>& a, const FormattedVertexT<Q>& b,
-                                      const LatticeGeometry& g, int rows, Edge<P>* chain, UInt<5>& count) {
+void add_chain_edge(const FormattedVertexT<Q>& a, const FormattedVertexT<Q>& b, const LatticeGeometry& g, int rows,
+                    Edge<P>* chain, UInt<5>& count) {
   if (!(a.y < b.y)) return;  // horizontal
   int first = P::first_row_at_or_after(g, a.y);
   int last = P::first_row_at_or_after(g, b.y) - 1;

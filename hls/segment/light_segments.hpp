@@ -15,7 +15,7 @@ constexpr int kMaxLightSegments = kMaxLightRows;
 // The fixed-point light path; the double twin (cmodel) uses the exact chord instead of the table.
 template <class P>
 int generate_light_segments(const FormattedPrimitive& light, int raster_log2, UInt<3> channel,
-                                              Segment<P> (&out)[kMaxLightSegments]) {
+                            Segment<P> (&out)[kMaxLightSegments]) {
   LightChord chords[kMaxLightRows];
   const int count = light_chords(light, raster_log2, chords);
   for (int k = 0; k < kMaxLightRows; ++k) {

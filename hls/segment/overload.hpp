@@ -34,7 +34,8 @@ inline int overload_threshold_top(const OverloadCounts& c, int bank_capacity) {
   int threshold = 0;
   for (int k = 0; k < kAreaCodes; ++k) {
     for (int f = 0; f < 2; ++f) sum[f] = UInt<29>(sum[f].value() + c.segments[f][k].value());
-    const bool fits = sum[0].value() <= UInt<29>(bank_capacity).value() && sum[1].value() <= UInt<29>(bank_capacity).value();
+    const bool fits =
+        sum[0].value() <= UInt<29>(bank_capacity).value() && sum[1].value() <= UInt<29>(bank_capacity).value();
     if (k > 0 && !fits) break;
     threshold = k;
   }

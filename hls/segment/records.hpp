@@ -35,9 +35,9 @@ struct Edge {
   typename P::Coord x_begin, y_begin, x_end, y_end;
   typename P::Level i_begin, i_end;
   typename P::Depth z_begin, z_end;
-  typename P::Slope dx_per_row;      // eq. 2 times the sample-row spacing
-  typename P::Slope x_first;         // X at row_first (the preprocessor's first crossing), in the
-                                     // slope's format: it loads the stepping accumulator
+  typename P::Slope dx_per_row;  // eq. 2 times the sample-row spacing
+  typename P::Slope x_first;     // X at row_first (the preprocessor's first crossing), in the
+                                 // slope's format: it loads the stepping accumulator
 };
 
 // Area codes of eq. 6: 0 protected, 1 (largest) .. 15 (smallest).
@@ -50,17 +50,17 @@ struct PolygonHeader {
   typename P::Level colour[3];
   bool opaque = true, protect = false;
   UInt<4> area_code;
-  typename P::Area twice_area;       // eq. 6 without the 1/2, grid units^2; sign = orientation
-  int row_first = 0, row_last = -1;  // sample rows covered by the polygon
+  typename P::Area twice_area;           // eq. 6 without the 1/2, grid units^2; sign = orientation
+  int row_first = 0, row_last = -1;      // sample rows covered by the polygon
   UInt<11> segments_even, segments_odd;  // raster lines crossed, by field (for overload)
   UInt<5> left_count, right_count;
 };
 
 template <class P>
 struct PolygonEdges {
-  bool valid = false;                // false: no sample row crosses it (degenerate): dropped
+  bool valid = false;  // false: no sample row crosses it (degenerate): dropped
   PolygonHeader<P> h;
-  Edge<P> left[kMaxEdgesPerChain];   // top to bottom
+  Edge<P> left[kMaxEdgesPerChain];  // top to bottom
   Edge<P> right[kMaxEdgesPerChain];
 };
 
@@ -76,18 +76,18 @@ constexpr unsigned kSegTop = 1, kSegBottom = 2, kSegMiddle = 3, kSegWhole = 4;
 
 template <class P>
 struct Segment {
-  UInt<10> line;                     // raster line 0..N-1
-  UInt<3> type;                      // kSegTop .. kSegWhole
-  UInt<2> row_first, row_last;       // covered sample rows within the line
+  UInt<10> line;                // raster line 0..N-1
+  UInt<3> type;                 // kSegTop .. kSegWhole
+  UInt<2> row_first, row_last;  // covered sample rows within the line
   // Left and right X at each of the line's 4 sample rows (rows outside row_first..row_last
   // unused). The seed's segment carries four X values (left and right at the top and bottom of
   // the line) and interpolates between them; where a chain vertex lies inside the line that
   // misplaces the middle rows and opens cracks between neighbouring polygons, so the rows are
   // stored exactly (SegmentOptions::seed_quadrilateral restores the seed's interpolation).
   typename P::X xl[kRowsPerLine], xr[kRowsPerLine];
-  typename P::Intensity il, ir;      // eq. 3 at the ends, at the covered rows' centre
-  typename P::Depth zl, zr;          // eq. 4 at the ends
-  UInt<16> source;                   // polygon id, or light id when is_light
+  typename P::Intensity il, ir;  // eq. 3 at the ends, at the covered rows' centre
+  typename P::Depth zl, zr;      // eq. 4 at the ends
+  UInt<16> source;               // polygon id, or light id when is_light
   bool is_light = false;
   bool opaque = true;
   UInt<3> channel;

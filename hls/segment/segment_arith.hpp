@@ -17,8 +17,8 @@
 
 // hls-subset-helper: the arithmetic policy and format sets shared by every segment kernel.
 
-#include "hls/segment/records.hpp"
 #include "hls/pixel/sample_colour.hpp"
+#include "hls/segment/records.hpp"
 #include "hls/types/zfloat_ops.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
@@ -50,7 +50,7 @@ struct FixedSegmentArith {
   static int area_code(const Area& twice) {
     const UInt<32> mag = UInt<32>(twice.value() < 0 ? -twice.value() : twice.value());
     const int msb = leading_one(mag);  // floor(log2(twice)); the area's is one less
-    const int code = 21 - msb;  // 20 - (msb - 1)
+    const int code = 21 - msb;         // 20 - (msb - 1)
     return code < 1 ? 1 : code > 15 ? 15 : code;
   }
   // Ceiling and floor in half units are exact for integer grid coordinates.
@@ -60,11 +60,11 @@ struct FixedSegmentArith {
 
   // Eq. 2 per sample row: (xb - xa) / (yb - ya) * row spacing, rounded to Slope.
   // Row spacing is 2^s half units = 2^(s-1) grid units; the quotient is taken on half units.
-  static Slope slope_per_row(const LatticeGeometry& g, const Coord& xa, const Coord& ya,
-                                               const Coord& xb, const Coord& yb) {
+  static Slope slope_per_row(const LatticeGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
+                             const Coord& yb) {
     const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
     const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));  // half units, > 0
-    const Int<26> num = Int<26>(dx.value() * (1 << g.log2_half_spacing));        // dx * spacing (half units)
+    const Int<26> num = Int<26>(dx.value() * (1 << g.log2_half_spacing));  // dx * spacing (half units)
     return fixed_div<Slope>(Fixed<26, 26>::from_raw(num), Fixed<14, 14>::from_raw(dy2));
   }
   // The preprocessor's crossing: X at row k on edge (xa, ya)-(xb, yb), one rounding (eq. 2 at a
@@ -72,8 +72,8 @@ struct FixedSegmentArith {
   // format (the accumulator's fractional bits), not rounded to X: with X's precision its rounding
   // error (up to 1/2 LSB_X) would add to the stepping's before the final rounding into X, and an
   // exact crossing on a sample column could then round off it (see SegmentFormatFine).
-  static Slope crossing(const LatticeGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb,
-                                          const Coord& yb, int k) {
+  static Slope crossing(const LatticeGeometry& g, const Coord& xa, const Coord& ya, const Coord& xb, const Coord& yb,
+                        int k) {
     const Int<14> dx = Int<14>(int(xb.value()) - int(xa.value()));
     const Int<14> dy2 = Int<14>(2 * (int(yb.value()) - int(ya.value())));
     const Int<15> t2 = Int<15>(g.sample_half(k) - coord_half(ya));  // row's distance below ya, half units
@@ -84,9 +84,7 @@ struct FixedSegmentArith {
   // Incremental stepping: x + rows * slope from the accumulator (the first crossing, in the
   // slope's format), rounded to X (the accumulator is exact in hardware; rounding happens when
   // the value leaves it).
-  static X step(const Slope& x, const Slope& s, int rows) {
-    return X(x + Fixed<13, 13>::from_raw(Int<13>(rows)) * s);
-  }
+  static X step(const Slope& x, const Slope& s, int rows) { return X(x + Fixed<13, 13>::from_raw(Int<13>(rows)) * s); }
   // Linear interpolation x0 + (x1 - x0) * num / den (den in 1..3: the video channel's rows).
   static X lerp_x(const X& x0, const X& x1, int num, int den) {
     const auto diff = x1 - x0;
@@ -102,8 +100,7 @@ struct FixedSegmentArith {
     return t4 < 0 ? 0 : (t4 > dy4 ? dy4 : t4);
   }
   // Eq. 3: I at yt (quarter units) on an edge from (yb, ib) to (ye, ie), clamped to [0, 255].
-  static Intensity intensity_at(const Level& ib, const Level& ie, const Coord& yb,
-                                                  const Coord& ye, int yt_quarter) {
+  static Intensity intensity_at(const Level& ib, const Level& ie, const Coord& yb, const Coord& ye, int yt_quarter) {
     const Int<10> di = Int<10>(int(ie.value()) - int(ib.value()));
     const Int<16> t4 = Int<16>(along_edge_quarter(yb, ye, yt_quarter));  // quarter units below yb
     const Int<15> dy4 = Int<15>(4 * (int(ye.value()) - int(yb.value())));
@@ -113,9 +110,9 @@ struct FixedSegmentArith {
     return Intensity(Fixed<9, 9>::from_raw(Int<9>(int(ib.value()))) + along);  // saturates to 0..255
   }
   // Eq. 4 on e8m7 values.
-  static Depth depth_at(const Depth& zb, const Depth& ze, const Coord& yb, const Coord& ye,
-                                          int yt_quarter) {
-    return zfloat_lerp(zb, ze, Int<16>(along_edge_quarter(yb, ye, yt_quarter)), Int<16>(4 * (int(ye.value()) - int(yb.value()))));
+  static Depth depth_at(const Depth& zb, const Depth& ze, const Coord& yb, const Coord& ye, int yt_quarter) {
+    return zfloat_lerp(zb, ze, Int<16>(along_edge_quarter(yb, ye, yt_quarter)),
+                       Int<16>(4 * (int(ye.value()) - int(yb.value()))));
   }
 
   // ---- Video channel ----
@@ -125,11 +122,9 @@ struct FixedSegmentArith {
   using FogTable = ::cig::hls::FogTable;
 
   // X of sample column i: 2 X_i = (u/2) i + u/4 - 2 (half units), exact with one fractional bit.
-  static X column_x(const LatticeGeometry& g, int i) {
-    return X(Fixed<16, 15>::from_raw(Int<16>(g.sample_half(i))));
-  }
+  static X column_x(const LatticeGeometry& g, int i) { return X(Fixed<16, 15>::from_raw(Int<16>(g.sample_half(i)))); }
   static X midpoint(const X& a, const X& b) {
-    const auto sum = a + b;  // one more integer bit
+    const auto sum = a + b;                                                                   // one more integer bit
     return X(Fixed<decltype(sum)::width, decltype(sum)::int_bits - 1>::from_raw(sum.raw()));  // halve
   }
   // Interpolation along a segment: t = (x - x_left) / span through one reciprocal per segment

@@ -46,10 +46,10 @@ int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channe
   for (int line = 0; line < kMaxLines; ++line) {
     const int L = line_first + line;
     if (L > line_last) break;
-    const int rf = h.row_first > 4 * L ? h.row_first : 4 * L;          // first covered row
-    const int rl = h.row_last < 4 * L + 3 ? h.row_last : 4 * L + 3;    // last covered row
-    const int rm = (rf + rl) >> 1;                                      // the row I and Z use
-    const int yt_quarter = g.sample_half(rf) + g.sample_half(rl);             // centre of rf..rl, quarter units
+    const int rf = h.row_first > 4 * L ? h.row_first : 4 * L;        // first covered row
+    const int rl = h.row_last < 4 * L + 3 ? h.row_last : 4 * L + 3;  // last covered row
+    const int rm = (rf + rl) >> 1;                                   // the row I and Z use
+    const int yt_quarter = g.sample_half(rf) + g.sample_half(rl);    // centre of rf..rl, quarter units
     Segment<P>& s = out[count++];
     s.line = UInt<10>(L);
     const bool top = rf == h.row_first, bottom = rl == h.row_last;
@@ -60,7 +60,7 @@ int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channe
     for (int r = 0; r < kRowsPerLine; ++r) {
       const int k = 4 * L + r;
       if (k < rf || k > rl) continue;
-      le = detail::edge_for_row(in.left, lc, le, k);   // X advances by the slope, edge by edge
+      le = detail::edge_for_row(in.left, lc, le, k);  // X advances by the slope, edge by edge
       re = detail::edge_for_row(in.right, rc, re, k);
       s.xl[r] = detail::x_at_row(in.left[le], k);
       s.xr[r] = detail::x_at_row(in.right[re], k);

@@ -36,8 +36,8 @@ struct PixelLine {
 namespace detail {
 
 template <class P>
-void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int cols,
-                                    const VideoTables<P>& t, LineBuffer<P>& w) {
+void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int cols, const VideoTables<P>& t,
+                  LineBuffer<P>& w) {
   const int rf = int(s.row_first.value()), rl = int(s.row_last.value());
   const int src = int(s.source.value());
   // Where il and zl (ir and zr) hold: the left (right) X at the centre of the covered rows.
@@ -74,8 +74,8 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
 
 // Renders raster line `line` of an N = 2^raster_log2 raster; returns the segments it read.
 template <class P, int K>
-int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t,
-                                  LineBuffer<P>& w, PixelLine& out) {
+int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t, LineBuffer<P>& w,
+                PixelLine& out) {
   const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
   const int n = 1 << raster_log2, cols = kRowsPerLine * n;
   for (int r = 0; r < kRowsPerLine; ++r)
@@ -116,9 +116,8 @@ int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const V
       int count = 0;
       for (int b2 = 0; b2 < 16; ++b2) count += ids[b2] == ids[a] ? 1 : 0;
       // Most samples wins; ties go to the earlier polygon; the background (-1) loses ties.
-      const bool better = count > best_count ||
-                          (count == best_count && ids[a] != best &&
-                           (best == -1 ? ids[a] >= 0 : (ids[a] >= 0 && ids[a] < best)));
+      const bool better = count > best_count || (count == best_count && ids[a] != best &&
+                                                 (best == -1 ? ids[a] >= 0 : (ids[a] >= 0 && ids[a] < best)));
       if (better) {
         best = ids[a];
         best_count = count;

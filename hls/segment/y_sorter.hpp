@@ -17,8 +17,8 @@ struct SegmentMemory {
   int next[2][kWords];
   int used[2] = {0, 0};
   int head[kMaxLines], tail[kMaxLines];
-  UInt<17> count[kMaxLines];   // segments per line (the video channel's load)
-  UInt<24> dropped[2];         // segments lost to a full bank, per field
+  UInt<17> count[kMaxLines];  // segments per line (the video channel's load)
+  UInt<24> dropped[2];        // segments lost to a full bank, per field
 };
 
 template <class P, int K>

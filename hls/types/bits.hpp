@@ -39,21 +39,14 @@ constexpr int max_width(int a, int b) { return a > b ? a : b; }
 
 // Two's complement wrap of v to w bits, sign-extended back to 64.
 constexpr std::int64_t wrap_signed(std::int64_t v, int w) {
-  return w >= 64 ? v
-                 : static_cast<std::int64_t>(static_cast<std::uint64_t>(v) << (64 - w)) >> (64 - w);
+  return w >= 64 ? v : static_cast<std::int64_t>(static_cast<std::uint64_t>(v) << (64 - w)) >> (64 - w);
 }
 constexpr std::uint64_t wrap_unsigned(std::uint64_t v, int w) {
   return w >= 64 ? v : (v & ((std::uint64_t{1} << w) - 1));
 }
-constexpr std::int64_t signed_min(int w) {
-  return w >= 64 ? INT64_MIN : -(std::int64_t{1} << (w - 1));
-}
-constexpr std::int64_t signed_max(int w) {
-  return w >= 64 ? INT64_MAX : (std::int64_t{1} << (w - 1)) - 1;
-}
-constexpr std::uint64_t unsigned_max(int w) {
-  return w >= 64 ? UINT64_MAX : (std::uint64_t{1} << w) - 1;
-}
+constexpr std::int64_t signed_min(int w) { return w >= 64 ? INT64_MIN : -(std::int64_t{1} << (w - 1)); }
+constexpr std::int64_t signed_max(int w) { return w >= 64 ? INT64_MAX : (std::int64_t{1} << (w - 1)) - 1; }
+constexpr std::uint64_t unsigned_max(int w) { return w >= 64 ? UINT64_MAX : (std::uint64_t{1} << w) - 1; }
 
 #ifdef CIG_HLS_SYSTEMC
 template <int W>
@@ -178,13 +171,21 @@ struct is_hls_int<UInt<W>> : std::true_type {};
 
 // Low V bits (two's complement wrap).
 template <int V, int W>
-CIG_HLS_CONSTEXPR Int<V> wrap(const Int<W>& x) { return Int<V>(x.value()); }
+CIG_HLS_CONSTEXPR Int<V> wrap(const Int<W>& x) {
+  return Int<V>(x.value());
+}
 template <int V, int W>
-CIG_HLS_CONSTEXPR Int<V> wrap(const UInt<W>& x) { return Int<V>(x.value()); }
+CIG_HLS_CONSTEXPR Int<V> wrap(const UInt<W>& x) {
+  return Int<V>(x.value());
+}
 template <int V, int W>
-CIG_HLS_CONSTEXPR UInt<V> wrap_unsigned(const Int<W>& x) { return UInt<V>(x.value()); }
+CIG_HLS_CONSTEXPR UInt<V> wrap_unsigned(const Int<W>& x) {
+  return UInt<V>(x.value());
+}
 template <int V, int W>
-CIG_HLS_CONSTEXPR UInt<V> wrap_unsigned(const UInt<W>& x) { return UInt<V>(x.value()); }
+CIG_HLS_CONSTEXPR UInt<V> wrap_unsigned(const UInt<W>& x) {
+  return UInt<V>(x.value());
+}
 
 // Clamped to the range of V bits.
 template <int V, int W>
@@ -195,8 +196,9 @@ CIG_HLS_CONSTEXPR Int<V> saturate(const Int<W>& x) {
 template <int V, int W>
 CIG_HLS_CONSTEXPR UInt<V> saturate_unsigned(const Int<W>& x) {
   const std::int64_t v = x.value();
-  return UInt<V>(v < 0 ? 0 : static_cast<std::uint64_t>(v) > UInt<V>::max_value ? UInt<V>::max_value
-                                                                               : static_cast<std::uint64_t>(v));
+  return UInt<V>(v < 0                                                ? 0
+                 : static_cast<std::uint64_t>(v) > UInt<V>::max_value ? UInt<V>::max_value
+                                                                      : static_cast<std::uint64_t>(v));
 }
 template <int V, int W>
 CIG_HLS_CONSTEXPR UInt<V> saturate_unsigned(const UInt<W>& x) {
@@ -206,13 +208,19 @@ CIG_HLS_CONSTEXPR UInt<V> saturate_unsigned(const UInt<W>& x) {
 
 // Reinterpretation of the same W bits.
 template <int W>
-CIG_HLS_CONSTEXPR Int<W> as_signed(const UInt<W>& x) { return Int<W>(x.value()); }
+CIG_HLS_CONSTEXPR Int<W> as_signed(const UInt<W>& x) {
+  return Int<W>(x.value());
+}
 template <int W>
-CIG_HLS_CONSTEXPR UInt<W> as_unsigned(const Int<W>& x) { return UInt<W>(x.value()); }
+CIG_HLS_CONSTEXPR UInt<W> as_unsigned(const Int<W>& x) {
+  return UInt<W>(x.value());
+}
 
 // Exact conversion of an unsigned value to signed (one more bit).
 template <int W>
-CIG_HLS_CONSTEXPR Int<W + 1> to_signed(const UInt<W>& x) { return Int<W + 1>(x.value()); }
+CIG_HLS_CONSTEXPR Int<W + 1> to_signed(const UInt<W>& x) {
+  return Int<W + 1>(x.value());
+}
 
 // ---- Arithmetic (exact: the result is wide enough) -----------------------------------------------
 
@@ -229,7 +237,9 @@ CIG_HLS_CONSTEXPR Int<A + B> operator*(const Int<A>& a, const Int<B>& b) {
   return Int<A + B>(a.value() * b.value());
 }
 template <int A>
-CIG_HLS_CONSTEXPR Int<A + 1> operator-(const Int<A>& a) { return Int<A + 1>(-a.value()); }
+CIG_HLS_CONSTEXPR Int<A + 1> operator-(const Int<A>& a) {
+  return Int<A + 1>(-a.value());
+}
 
 template <int A, int B>
 CIG_HLS_CONSTEXPR UInt<detail::max_width(A, B) + 1> operator+(const UInt<A>& a, const UInt<B>& b) {
@@ -246,17 +256,29 @@ CIG_HLS_CONSTEXPR UInt<A + B> operator*(const UInt<A>& a, const UInt<B>& b) {
 
 // Mixed signed/unsigned: the unsigned operand is first made signed (exactly, one more bit).
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator+(const Int<A>& a, const UInt<B>& b) { return a + to_signed(b); }
+CIG_HLS_CONSTEXPR auto operator+(const Int<A>& a, const UInt<B>& b) {
+  return a + to_signed(b);
+}
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator+(const UInt<A>& a, const Int<B>& b) { return to_signed(a) + b; }
+CIG_HLS_CONSTEXPR auto operator+(const UInt<A>& a, const Int<B>& b) {
+  return to_signed(a) + b;
+}
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator-(const Int<A>& a, const UInt<B>& b) { return a - to_signed(b); }
+CIG_HLS_CONSTEXPR auto operator-(const Int<A>& a, const UInt<B>& b) {
+  return a - to_signed(b);
+}
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator-(const UInt<A>& a, const Int<B>& b) { return to_signed(a) - b; }
+CIG_HLS_CONSTEXPR auto operator-(const UInt<A>& a, const Int<B>& b) {
+  return to_signed(a) - b;
+}
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator*(const Int<A>& a, const UInt<B>& b) { return a * to_signed(b); }
+CIG_HLS_CONSTEXPR auto operator*(const Int<A>& a, const UInt<B>& b) {
+  return a * to_signed(b);
+}
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator*(const UInt<A>& a, const Int<B>& b) { return to_signed(a) * b; }
+CIG_HLS_CONSTEXPR auto operator*(const UInt<A>& a, const Int<B>& b) {
+  return to_signed(a) * b;
+}
 
 // Quotient toward zero (C++ semantics); width of the dividend plus one (for min / -1).
 template <int A, int B>
@@ -297,11 +319,17 @@ CIG_HLS_CONSTEXPR Int<W> operator<<(const Int<W>& x, int n) {
   return Int<W>(static_cast<std::int64_t>(static_cast<std::uint64_t>(x.value()) << n));
 }
 template <int W>
-CIG_HLS_CONSTEXPR Int<W> operator>>(const Int<W>& x, int n) { return Int<W>(x.value() >> n); }
+CIG_HLS_CONSTEXPR Int<W> operator>>(const Int<W>& x, int n) {
+  return Int<W>(x.value() >> n);
+}
 template <int W>
-CIG_HLS_CONSTEXPR UInt<W> operator<<(const UInt<W>& x, int n) { return UInt<W>(x.value() << n); }
+CIG_HLS_CONSTEXPR UInt<W> operator<<(const UInt<W>& x, int n) {
+  return UInt<W>(x.value() << n);
+}
 template <int W>
-CIG_HLS_CONSTEXPR UInt<W> operator>>(const UInt<W>& x, int n) { return UInt<W>(x.value() >> n); }
+CIG_HLS_CONSTEXPR UInt<W> operator>>(const UInt<W>& x, int n) {
+  return UInt<W>(x.value() >> n);
+}
 
 // ---- Bitwise (same signedness; the wider width) ------------------------------------------------------
 
@@ -318,7 +346,9 @@ CIG_HLS_CONSTEXPR UInt<detail::max_width(A, B)> operator^(const UInt<A>& a, cons
   return UInt<detail::max_width(A, B)>(a.value() ^ b.value());
 }
 template <int A>
-CIG_HLS_CONSTEXPR UInt<A> operator~(const UInt<A>& a) { return UInt<A>(~a.value()); }
+CIG_HLS_CONSTEXPR UInt<A> operator~(const UInt<A>& a) {
+  return UInt<A>(~a.value());
+}
 template <int A, int B>
 CIG_HLS_CONSTEXPR Int<detail::max_width(A, B)> operator&(const Int<A>& a, const Int<B>& b) {
   return Int<detail::max_width(A, B)>(a.value() & b.value());
@@ -338,9 +368,11 @@ namespace detail {
 template <class A, class B>
 CIG_HLS_CONSTEXPR int compare3(const A& a, const B& b) {
   // Unsigned values of 64 bits may exceed int64; compare through the sign first.
-  if constexpr (std::is_same_v<decltype(a.value()), std::int64_t> && std::is_same_v<decltype(b.value()), std::int64_t>) {
+  if constexpr (std::is_same_v<decltype(a.value()), std::int64_t> &&
+                std::is_same_v<decltype(b.value()), std::int64_t>) {
     return a.value() < b.value() ? -1 : a.value() > b.value() ? 1 : 0;
-  } else if constexpr (std::is_same_v<decltype(a.value()), std::uint64_t> && std::is_same_v<decltype(b.value()), std::uint64_t>) {
+  } else if constexpr (std::is_same_v<decltype(a.value()), std::uint64_t> &&
+                       std::is_same_v<decltype(b.value()), std::uint64_t>) {
     return a.value() < b.value() ? -1 : a.value() > b.value() ? 1 : 0;
   } else if constexpr (std::is_same_v<decltype(a.value()), std::int64_t>) {
     if (a.value() < 0) return -1;
@@ -352,10 +384,10 @@ CIG_HLS_CONSTEXPR int compare3(const A& a, const B& b) {
 }
 }  // namespace detail
 
-#define CIG_HLS_COMPARE(op)                                                                        \
+#define CIG_HLS_COMPARE(op)                                                                           \
   template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>> \
-  CIG_HLS_CONSTEXPR bool operator op(const A& a, const B& b) {                                     \
-    return detail::compare3(a, b) op 0;                                                            \
+  CIG_HLS_CONSTEXPR bool operator op(const A& a, const B& b) {                                        \
+    return detail::compare3(a, b) op 0;                                                               \
   }
 CIG_HLS_COMPARE(==)
 CIG_HLS_COMPARE(!=)
@@ -368,7 +400,9 @@ CIG_HLS_COMPARE(>=)
 // ---- Small helpers kernels use often ---------------------------------------------------------------
 
 template <int W>
-CIG_HLS_CONSTEXPR Int<W + 1> abs_value(const Int<W>& x) { return Int<W + 1>(x.value() < 0 ? -x.value() : x.value()); }
+CIG_HLS_CONSTEXPR Int<W + 1> abs_value(const Int<W>& x) {
+  return Int<W + 1>(x.value() < 0 ? -x.value() : x.value());
+}
 
 // Position of the most significant set bit (floor(log2(x))), -1 for zero: a priority encoder,
 // written as a binary search (log2(W) steps) rather than a scan over every bit.
@@ -387,8 +421,12 @@ CIG_HLS_CONSTEXPR int leading_one(const UInt<W>& x) {
 }
 
 template <class T>
-CIG_HLS_CONSTEXPR T min_of(const T& a, const T& b) { return b < a ? b : a; }
+CIG_HLS_CONSTEXPR T min_of(const T& a, const T& b) {
+  return b < a ? b : a;
+}
 template <class T>
-CIG_HLS_CONSTEXPR T max_of(const T& a, const T& b) { return a < b ? b : a; }
+CIG_HLS_CONSTEXPR T max_of(const T& a, const T& b) {
+  return a < b ? b : a;
+}
 
 CIG_HLS_END_NAMESPACE

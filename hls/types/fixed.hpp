@@ -94,13 +94,12 @@ class Fixed {
   template <int V>
   CIG_HLS_CONSTEXPR explicit Fixed(const Int<V>& x) : Fixed(Fixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
   template <int V>
-  CIG_HLS_CONSTEXPR explicit Fixed(const UInt<V>& x) : Fixed(UFixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
+  CIG_HLS_CONSTEXPR explicit Fixed(const UInt<V>& x)
+      : Fixed(UFixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
 
   CIG_HLS_CONSTEXPR const Int<W>& raw() const { return raw_; }
   // Integer part, floor.
-  CIG_HLS_CONSTEXPR Int<(I > 0 ? I : 1)> floor_int() const {
-    return Int<(I > 0 ? I : 1)>(raw_.value() >> frac_bits);
-  }
+  CIG_HLS_CONSTEXPR Int<(I > 0 ? I : 1)> floor_int() const { return Int<(I > 0 ? I : 1)>(raw_.value() >> frac_bits); }
 
  private:
   Int<W> raw_;
@@ -135,14 +134,14 @@ class UFixed {
     raw_ = UInt<W>(detail::overflow_unsigned(v, W, O));
   }
   template <int V>
-  CIG_HLS_CONSTEXPR explicit UFixed(const UInt<V>& x) : UFixed(UFixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
+  CIG_HLS_CONSTEXPR explicit UFixed(const UInt<V>& x)
+      : UFixed(UFixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
   template <int V>
-  CIG_HLS_CONSTEXPR explicit UFixed(const Int<V>& x) : UFixed(Fixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
+  CIG_HLS_CONSTEXPR explicit UFixed(const Int<V>& x)
+      : UFixed(Fixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
 
   CIG_HLS_CONSTEXPR const UInt<W>& raw() const { return raw_; }
-  CIG_HLS_CONSTEXPR UInt<(I > 0 ? I : 1)> floor_int() const {
-    return UInt<(I > 0 ? I : 1)>(raw_.value() >> frac_bits);
-  }
+  CIG_HLS_CONSTEXPR UInt<(I > 0 ? I : 1)> floor_int() const { return UInt<(I > 0 ? I : 1)>(raw_.value() >> frac_bits); }
 
  private:
   UInt<W> raw_;
@@ -185,12 +184,14 @@ struct UnsignedSumFormat {
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR auto operator+(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::SumFormat<Fixed<Wa, Ia>, Fixed<Wb, Ib>>::type;
-  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) + detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
+  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) +
+                           detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR auto operator-(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::SumFormat<Fixed<Wa, Ia>, Fixed<Wb, Ib>>::type;
-  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) - detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
+  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) -
+                           detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR Fixed<Wa + Wb, Ia + Ib> operator*(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
@@ -203,23 +204,31 @@ CIG_HLS_CONSTEXPR Fixed<W + 1, I + 1> operator-(const Fixed<W, I, Q, O>& a) {
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR auto operator+(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::UnsignedSumFormat<UFixed<Wa, Ia>, UFixed<Wb, Ib>>::type;
-  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) + detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
+  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) +
+                           detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
 CIG_HLS_CONSTEXPR UFixed<Wa + Wb, Ia + Ib> operator*(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
   return UFixed<Wa + Wb, Ia + Ib>::from_raw(a.raw() * b.raw());
 }
 // Mixed or unsigned difference: through the signed view.
-template <class A, class B,
-          class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (!A::is_signed || !B::is_signed)>>
-CIG_HLS_CONSTEXPR auto operator-(const A& a, const B& b) { return to_signed(a) - to_signed(b); }
+template <
+    class A, class B,
+    class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (!A::is_signed || !B::is_signed)>>
+CIG_HLS_CONSTEXPR auto operator-(const A& a, const B& b) {
+  return to_signed(a) - to_signed(b);
+}
 template <class A, class B,
           class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (A::is_signed != B::is_signed)>>
-CIG_HLS_CONSTEXPR auto operator+(const A& a, const B& b) { return to_signed(a) + to_signed(b); }
+CIG_HLS_CONSTEXPR auto operator+(const A& a, const B& b) {
+  return to_signed(a) + to_signed(b);
+}
 template <class A, class B,
           class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (A::is_signed != B::is_signed)>,
           class = void>
-CIG_HLS_CONSTEXPR auto operator*(const A& a, const B& b) { return to_signed(a) * to_signed(b); }
+CIG_HLS_CONSTEXPR auto operator*(const A& a, const B& b) {
+  return to_signed(a) * to_signed(b);
+}
 
 // ---- Comparisons -----------------------------------------------------------------------------------
 
@@ -227,18 +236,19 @@ namespace detail {
 template <class A, class B>
 CIG_HLS_CONSTEXPR int compare_fixed(const A& a, const B& b) {
   constexpr int F = max_width(A::frac_bits, B::frac_bits);
-  static_assert(A::width + F - A::frac_bits <= 64 && B::width + F - B::frac_bits <= 64, "comparison needs more than 64 bits");
+  static_assert(A::width + F - A::frac_bits <= 64 && B::width + F - B::frac_bits <= 64,
+                "comparison needs more than 64 bits");
   const std::int64_t x = shift_left(static_cast<std::int64_t>(a.raw().value()), F - A::frac_bits);
   const std::int64_t y = shift_left(static_cast<std::int64_t>(b.raw().value()), F - B::frac_bits);
   return x < y ? -1 : x > y ? 1 : 0;
 }
 }  // namespace detail
 
-#define CIG_HLS_FIXED_COMPARE(op)                                                                       \
+#define CIG_HLS_FIXED_COMPARE(op)                                                                         \
   template <class A, class B, class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value>, \
-            class = void, class = void>                                                                 \
-  CIG_HLS_CONSTEXPR bool operator op(const A& a, const B& b) {                                          \
-    return detail::compare_fixed(a, b) op 0;                                                            \
+            class = void, class = void>                                                                   \
+  CIG_HLS_CONSTEXPR bool operator op(const A& a, const B& b) {                                            \
+    return detail::compare_fixed(a, b) op 0;                                                              \
   }
 CIG_HLS_FIXED_COMPARE(==)
 CIG_HLS_FIXED_COMPARE(!=)
@@ -262,7 +272,8 @@ CIG_HLS_CONSTEXPR R fixed_div(const N& num, const D& den) {
   if (s >= 0) n = static_cast<std::int64_t>(static_cast<std::uint64_t>(n) << s);
   else d = static_cast<std::int64_t>(static_cast<std::uint64_t>(d) << (-s));
   if (d == 0) {
-    if constexpr (R::is_signed) return R::from_raw_value(n < 0 ? detail::signed_min(R::width) : detail::signed_max(R::width));
+    if constexpr (R::is_signed)
+      return R::from_raw_value(n < 0 ? detail::signed_min(R::width) : detail::signed_max(R::width));
     else return R::from_raw_value(n < 0 ? 0 : detail::unsigned_max(R::width));
   }
   if (d < 0) {
@@ -278,7 +289,8 @@ CIG_HLS_CONSTEXPR R fixed_div(const N& num, const D& den) {
   const std::uint64_t twice_r = static_cast<std::uint64_t>(r) * 2;
   if (R::quant == Quant::kRound && twice_r >= static_cast<std::uint64_t>(d)) q += 1;
   if (R::quant == Quant::kRoundEven &&
-      (twice_r > static_cast<std::uint64_t>(d) || (twice_r == static_cast<std::uint64_t>(d) && (q & 1)))) q += 1;
+      (twice_r > static_cast<std::uint64_t>(d) || (twice_r == static_cast<std::uint64_t>(d) && (q & 1))))
+    q += 1;
   if constexpr (R::is_signed) return R::from_raw_value(detail::overflow_signed(q, R::width, R::overflow));
   else return R::from_raw_value(detail::overflow_unsigned(q, R::width, R::overflow));
 }

@@ -62,7 +62,8 @@ void register_all() {
                                                                                 {"overload", &overload_frame}};
   for (const auto& [input, frame] : inputs)
     for (const Case& c : cases)
-      cig::bench::register_case(c.name + "/" + input, [c, frame = frame](benchmark::State& s) { run_engine(s, c, frame); }, false);
+      cig::bench::register_case(
+          c.name + "/" + input, [c, frame = frame](benchmark::State& s) { run_engine(s, c, frame); }, false);
 }
 
 }  // namespace

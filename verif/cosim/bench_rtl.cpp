@@ -35,7 +35,8 @@ ScreenFrame random_frame() {
     cig::ScreenPolygon p;
     const double cx = u(-0.8, 0.8), cy = u(-0.8, 0.8), s = u(0.02, 0.5);
     const double z = 10 + k;
-    p.vertices = {{cx - s, cy - s, z, u(0.2, 1)}, {cx + s, cy - s * 0.5, z + 1, u(0.2, 1)}, {cx, cy + s, z + 2, u(0.2, 1)}};
+    p.vertices = {
+        {cx - s, cy - s, z, u(0.2, 1)}, {cx + s, cy - s * 0.5, z + 1, u(0.2, 1)}, {cx, cy + s, z + 2, u(0.2, 1)}};
     p.colour = {u(0.1, 1), u(0.1, 1), u(0.1, 1)};
     f.polygons.push_back(p);
   }
@@ -82,9 +83,11 @@ void register_all() {
     const ScreenFrame& (*frame)();
     int n, t;
   };
-  for (const Case& c : {Case{"rtl/random/6p", &random150_frame, 6, 1}, Case{"rtl/random/4p2t", &random150_frame, 6, 2},
-                        Case{"rtl/overlap/6p", &overlap_frame, 6, 1}, Case{"rtl/airfield/9p", &cig::bench::airfield_frame, 9, 1},
-                        Case{"rtl/airfield/7p2t", &cig::bench::airfield_frame, 9, 2}, Case{"rtl/depth10/9p", &cig::bench::depth10_frame, 9, 1}})
+  for (const Case& c :
+       {Case{"rtl/random/6p", &random150_frame, 6, 1}, Case{"rtl/random/4p2t", &random150_frame, 6, 2},
+        Case{"rtl/overlap/6p", &overlap_frame, 6, 1}, Case{"rtl/airfield/9p", &cig::bench::airfield_frame, 9, 1},
+        Case{"rtl/airfield/7p2t", &cig::bench::airfield_frame, 9, 2},
+        Case{"rtl/depth10/9p", &cig::bench::depth10_frame, 9, 1}})
     cig::bench::register_case(c.name, [c](benchmark::State& s) { run_rtl(s, c.frame, c.n, c.t); });
 }
 

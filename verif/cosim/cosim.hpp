@@ -49,9 +49,9 @@ enum class EventKind { kLoad, kEmit, kPixel };
 struct Event {
   EventKind kind = EventKind::kLoad;
   long long cycle = 0;
-  int child = 0;          // emits
-  unsigned mask = 0;      // loads: the mask word; pixels: the samples taken
-  bool full = false;      // emits: child fully covered; pixels: the pixel became full
+  int child = 0;      // emits
+  unsigned mask = 0;  // loads: the mask word; pixels: the samples taken
+  bool full = false;  // emits: child fully covered; pixels: the pixel became full
   Bits record;
 };
 
@@ -68,11 +68,11 @@ struct MaskSetEvent {
 
 struct Trace {
   long long cycles = 0;
-  std::vector<std::vector<Event>> pe;      // per PE: loads and emits in cycle order
-  std::vector<std::vector<Event>> pixel;   // per pixel processor
-  std::vector<MaskSetEvent> mask_sets;     // sorted
+  std::vector<std::vector<Event>> pe;     // per PE: loads and emits in cycle order
+  std::vector<std::vector<Event>> pixel;  // per pixel processor
+  std::vector<MaskSetEvent> mask_sets;    // sorted
   Image image;
-  double seconds = 0;                      // wall time of the run (simulation speed)
+  double seconds = 0;  // wall time of the run (simulation speed)
 };
 
 // The model's side: the architecture model with a tracer that records what the RTL must show.
@@ -89,10 +89,12 @@ class TraceRecorder final : public quad::ArchTracer<P> {
     t_.pe[std::size_t(pe)].push_back({EventKind::kLoad, cycle, 0, mask, false, Bits()});
   }
   void emit(long long cycle, int pe, int child, const quad::QuadItem<P>& c, bool full) override {
-    t_.pe[std::size_t(pe)].push_back({EventKind::kEmit, cycle, child, 0, full, pack_record(L_, c.w, unsigned(c.samples.value()))});
+    t_.pe[std::size_t(pe)].push_back(
+        {EventKind::kEmit, cycle, child, 0, full, pack_record(L_, c.w, unsigned(c.samples.value()))});
   }
   void pixel(long long cycle, int unit, const quad::QuadItem<P>& r, unsigned fresh, bool full) override {
-    t_.pixel[std::size_t(unit)].push_back({EventKind::kPixel, cycle, 0, fresh, full, pack_record(L_, r.w, unsigned(r.samples.value()))});
+    t_.pixel[std::size_t(unit)].push_back(
+        {EventKind::kPixel, cycle, 0, fresh, full, pack_record(L_, r.w, unsigned(r.samples.value()))});
   }
   void mask_set(long long cycle, int level, int x, int y, int child) override {
     t_.mask_sets.push_back({cycle, level, x, y, child});
@@ -105,13 +107,14 @@ class TraceRecorder final : public quad::ArchTracer<P> {
 
 // Runs the model on `roots` with the pixel frame `pixels` (begun for the frame).
 Trace model_trace(const quad::Architecture& arch, const std::vector<hls::QuadWindow<RtlArith>>& roots,
-                  quad::PixelFrame<RtlArith>& pixels, const StallConfig& stalls, int fifo_depth, quad::ArchStats* stats = nullptr);
+                  quad::PixelFrame<RtlArith>& pixels, const StallConfig& stalls, int fifo_depth,
+                  quad::ArchStats* stats = nullptr);
 
 struct Comparison {
-  long long records_compared = 0;   // PE loads and emits, pixel records, mask sets, pixels
-  long long mismatches = 0;         // records that differ (or are missing on one side)
+  long long records_compared = 0;  // PE loads and emits, pixel records, mask sets, pixels
+  long long mismatches = 0;        // records that differ (or are missing on one side)
   bool cycles_equal = false;
-  std::string first;                // the first mismatch, in detail ("" if none)
+  std::string first;  // the first mismatch, in detail ("" if none)
   bool ok() const { return mismatches == 0 && cycles_equal; }
 };
 
@@ -148,6 +151,7 @@ CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfi
                         long long max_cycles = 200000000);
 // The same on a stream of windows already set up (tests build their own streams).
 CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<hls::QuadWindow<RtlArith>>& roots,
-                         RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls, long long max_cycles = 200000000);
+                         RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
+                         long long max_cycles = 200000000);
 
 }  // namespace cig::cosim

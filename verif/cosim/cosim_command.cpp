@@ -7,30 +7,34 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.hpp"
-#include "hls/formatter/sample_lattice.hpp"
 #include "cli/frame_jobs.hpp"
 #include "common/error.hpp"
 #include "cosim.hpp"
 #include "cosim_command.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 
 namespace cig::cli {
 
 void CosimCommand::add_options(CLI::App& app) {
   app.add_option("input", input, "scene or polygon list")->required();
-  app.add_option("--arch", arch, "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np");
+  app.add_option("--arch", arch,
+                 "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np");
   frame_opt = app.add_option("--frame", frame_k, "frame number (scenes; default 0)");
   app.add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   app.add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
   app.add_option("--trace", trace_file, "write the RTL's waveform (FST) of the first image");
   app.add_option("--stall-seed", stall_seed, "seed of the verification stall pattern (default 1)");
-  app.add_option("--input-gaps", input_gaps, "percent of cycles the polygon port offers nothing (0..95)")->check(CLI::Range(0, 95));
-  app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")->check(CLI::Range(0, 95));
+  app.add_option("--input-gaps", input_gaps, "percent of cycles the polygon port offers nothing (0..95)")
+      ->check(CLI::Range(0, 95));
+  app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")
+      ->check(CLI::Range(0, 95));
   app.add_option("--report", report_file, "write a JSON report");
   model_limit.add_to(&app);
 }
 
 int CosimCommand::run() {
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
+  const FrameJobs jobs =
+      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   const int raster = jobs.screen_frame(0).raster;
   const int log2 = hls::raster_log2_of(raster);
   std::string wanted = arch.empty() ? std::to_string(log2) + "p" : arch;
@@ -42,8 +46,10 @@ int CosimCommand::run() {
     if (c.raster_log2 == log2 && c.arch_text() == a.text) cfg = c;
   }
   if (cfg.raster_log2 == 0)
-    throw InputError("", "--arch", "the RTL build has no configuration " + a.text + " for a " + std::to_string(raster) + "-line raster" +
-                                       (have.empty() ? " (it has none for that raster)" : " (it has: " + have + ")"));
+    throw InputError("", "--arch",
+                     "the RTL build has no configuration " + a.text + " for a " + std::to_string(raster) +
+                         "-line raster" +
+                         (have.empty() ? " (it has none for that raster)" : " (it has: " + have + ")"));
   if (!report_file.empty()) check_output_file(report_file, "--report");
   if (!trace_file.empty()) check_output_file(trace_file, "--trace");
   auto rtl = cosim::make_rtl_runner(cfg.raster_log2, cfg.tree_levels);
@@ -53,8 +59,9 @@ int CosimCommand::run() {
     rtl->trace_to(trace_file);
   }
   const cosim::StallConfig stalls{stall_seed, input_gaps, output_stalls};
-  std::cout << "cig cosim: " << input << ", architecture " << a.text << " (" << a.pe_count() << " PEs), stalls: input gaps "
-            << input_gaps << " %, output stalls " << output_stalls << " % (seed " << stall_seed << ")\n";
+  std::cout << "cig cosim: " << input << ", architecture " << a.text << " (" << a.pe_count()
+            << " PEs), stalls: input gaps " << input_gaps << " %, output stalls " << output_stalls << " % (seed "
+            << stall_seed << ")\n";
   std::cout << " frame  ch   records  mismatch  cycles model  cycles RTL   equal  RTL cycles/s  model cycles/s\n";
   nlohmann::ordered_json rep;
   rep["command"] = "cosim";
@@ -74,13 +81,17 @@ int CosimCommand::run() {
         std::filesystem::remove(trace_file);
       }
       if (!e.file().empty() || e.where() == "--arch") throw;
-      throw InputError(input, "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)) + ", " + e.where(), e.rule());
+      throw InputError(
+          input,
+          "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)) + ", " + e.where(),
+          e.rule());
     }
     const double rtl_speed = r.rtl.seconds > 0 ? double(r.rtl.cycles) / r.rtl.seconds : 0;
     const double model_speed = r.model.seconds > 0 ? double(r.model.cycles) / r.model.seconds : 0;
-    std::cout << std::setw(6) << jobs.frame(k) << std::setw(4) << jobs.channel(k) << std::setw(10) << r.comparison.records_compared
-              << std::setw(10) << r.comparison.mismatches << std::setw(14) << r.model.cycles << std::setw(12) << r.rtl.cycles
-              << std::setw(8) << (r.comparison.cycles_equal ? "yes" : "NO") << std::setw(14) << std::llround(rtl_speed) << std::setw(16)
+    std::cout << std::setw(6) << jobs.frame(k) << std::setw(4) << jobs.channel(k) << std::setw(10)
+              << r.comparison.records_compared << std::setw(10) << r.comparison.mismatches << std::setw(14)
+              << r.model.cycles << std::setw(12) << r.rtl.cycles << std::setw(8)
+              << (r.comparison.cycles_equal ? "yes" : "NO") << std::setw(14) << std::llround(rtl_speed) << std::setw(16)
               << std::llround(model_speed) << "\n";
     records += r.comparison.records_compared;
     mismatches += r.comparison.mismatches;
@@ -96,7 +107,8 @@ int CosimCommand::run() {
                            {"model_cycles_per_second", model_speed},
                            {"first_mismatch", r.comparison.first}});
   }
-  std::cout << "all: " << records << " records compared, " << mismatches << " mismatches, " << bad_cycles << " image(s) with a cycle mismatch\n";
+  std::cout << "all: " << records << " records compared, " << mismatches << " mismatches, " << bad_cycles
+            << " image(s) with a cycle mismatch\n";
   if (!first.empty()) std::cout << "first mismatch: " << first << "\n";
   rep["records_compared"] = records;
   rep["mismatches"] = mismatches;

@@ -124,7 +124,8 @@ Bits pack_record(const RecordLayout& L, const hls::QuadWindow<P>& w, unsigned sa
 // The first field in which two records differ: "name: expected E, got G" ("" when equal).
 inline std::string first_field_difference(const RecordLayout& L, const Bits& expected, const Bits& got) {
   for (const auto& fd : L.fields) {
-    const std::int64_t e = fd.is_signed ? expected.get_signed(fd.lo, fd.width) : std::int64_t(expected.get(fd.lo, fd.width));
+    const std::int64_t e =
+        fd.is_signed ? expected.get_signed(fd.lo, fd.width) : std::int64_t(expected.get(fd.lo, fd.width));
     const std::int64_t g = fd.is_signed ? got.get_signed(fd.lo, fd.width) : std::int64_t(got.get(fd.lo, fd.width));
     if (e != g) return fd.name + ": expected " + std::to_string(e) + ", got " + std::to_string(g);
   }
@@ -133,8 +134,8 @@ inline std::string first_field_difference(const RecordLayout& L, const Bits& exp
 
 // A short description of a record: level, address, polygon.
 inline std::string describe_record(const RecordLayout& L, const Bits& r) {
-  return "level " + std::to_string(r.get(L.fields[0].lo, 4)) + " window (" + std::to_string(r.get(L.fields[1].lo, 10)) + ", " +
-         std::to_string(r.get(L.fields[2].lo, 10)) + ") of polygon " +
+  return "level " + std::to_string(r.get(L.fields[0].lo, 4)) + " window (" + std::to_string(r.get(L.fields[1].lo, 10)) +
+         ", " + std::to_string(r.get(L.fields[2].lo, 10)) + ") of polygon " +
          std::to_string(r.get(L.fields[std::size_t(3 + L.ne + L.np)].lo, 16));
 }
 

@@ -12,11 +12,11 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
-#include "common/timing.hpp"
 #include "Vqt_raster_n6_t1.h"
 #include "Vqt_raster_n6_t2.h"
 #include "Vqt_raster_n9_t1.h"
 #include "Vqt_raster_n9_t2.h"
+#include "common/timing.hpp"
 #pragma GCC diagnostic pop
 
 #include "cosim.hpp"
@@ -58,8 +58,8 @@ class RtlRunnerImpl final : public RtlRunner {
     fst_->open(file.c_str());
   }
 
-  Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels, const StallConfig& stalls,
-            long long max_cycles) override {
+  Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
+            const StallConfig& stalls, long long max_cycles) override {
     configure(pixels);
     // Frame start: latched by the wrapper at this edge, applied by the design at the next one,
     // the loop's first, which starts cycle 0.
@@ -77,13 +77,17 @@ class RtlRunnerImpl final : public RtlRunner {
     for (std::size_t k = 0; k < roots.size(); ++k) set_port_bits(packed[k], pack_record(L_, roots[k], 0), L_.win_w);
     std::size_t next = 0;
     for (long long cycle = 0;; ++cycle) {
-      if (cycle >= max_cycles) throw std::runtime_error("cosim: the RTL did not finish the frame within " + std::to_string(max_cycles) + " cycles");
-      const bool offer = next < roots.size() && !quad::stall_hit(stalls.seed, std::uint64_t(cycle), 0, stalls.input_gap_percent);
+      if (cycle >= max_cycles)
+        throw std::runtime_error("cosim: the RTL did not finish the frame within " + std::to_string(max_cycles) +
+                                 " cycles");
+      const bool offer =
+          next < roots.size() && !quad::stall_hit(stalls.seed, std::uint64_t(cycle), 0, stalls.input_gap_percent);
       top_->poly_valid_i = offer ? 1 : 0;
       if (offer) top_->poly_i = packed[next];
       std::uint64_t stall_bits = 0;
       for (int u = 0; u < npix_; ++u)
-        if (quad::stall_hit(stalls.seed, std::uint64_t(cycle), std::uint32_t(1 + u), stalls.output_stall_percent)) stall_bits |= 1ull << u;
+        if (quad::stall_hit(stalls.seed, std::uint64_t(cycle), std::uint32_t(1 + u), stalls.output_stall_percent))
+          stall_bits |= 1ull << u;
       top_->pixel_stall_i = port_value_t<decltype(top_->pixel_stall_i)>(stall_bits);
       // The rising edge that starts this cycle: the design's registers take the previous cycle's
       // results, the wrapper latches this cycle's stimulus (qt_raster_cosim_tb.sv).
@@ -98,17 +102,28 @@ class RtlRunnerImpl final : public RtlRunner {
       // finishes its window emits its last child before it loads the next one, as in the model.
       for (int p = 0; p < npe_; ++p) {
         if (port_bit(top_->pe_emit_valid_o, p)) {
-          Event e{EventKind::kEmit, cycle, int(port_field(top_->pe_emit_child_o, 2 * p, 2)), 0, port_bit(top_->pe_emit_full_o, p), Bits()};
+          Event e{EventKind::kEmit,
+                  cycle,
+                  int(port_field(top_->pe_emit_child_o, 2 * p, 2)),
+                  0,
+                  port_bit(top_->pe_emit_full_o, p),
+                  Bits()};
           e.record = port_bits(top_->pe_emit_data_o, p * L_.pix_w, L_.pix_w);
           t.pe[std::size_t(p)].push_back(std::move(e));
         }
         if (port_bit(top_->pe_load_valid_o, p)) {
-          t.pe[std::size_t(p)].push_back({EventKind::kLoad, cycle, 0, unsigned(port_field(top_->pe_load_mask_o, 4 * p, 4)), false, Bits()});
+          t.pe[std::size_t(p)].push_back(
+              {EventKind::kLoad, cycle, 0, unsigned(port_field(top_->pe_load_mask_o, 4 * p, 4)), false, Bits()});
         }
       }
       for (int u = 0; u < npix_; ++u)
         if (port_bit(top_->px_valid_o, u)) {
-          Event e{EventKind::kPixel, cycle, 0, unsigned(port_field(top_->px_fresh_o, 16 * u, 16)), port_bit(top_->px_full_o, u), Bits()};
+          Event e{EventKind::kPixel,
+                  cycle,
+                  0,
+                  unsigned(port_field(top_->px_fresh_o, 16 * u, 16)),
+                  port_bit(top_->px_full_o, u),
+                  Bits()};
           e.record = port_bits(top_->px_data_o, u * L_.pix_w, L_.pix_w);
           t.pixel[std::size_t(u)].push_back(std::move(e));
         }
@@ -197,7 +212,8 @@ class RtlRunnerImpl final : public RtlRunner {
       write_cfg(3, std::uint32_t(e), cv.mask.value());
       for (int s = 0; s < 16; ++s) {
         if (!cv.mask.bit(s)) continue;
-        const std::uint64_t r = cv.colour[s][0].raw().value(), g = cv.colour[s][1].raw().value(), b = cv.colour[s][2].raw().value();
+        const std::uint64_t r = cv.colour[s][0].raw().value(), g = cv.colour[s][1].raw().value(),
+                            b = cv.colour[s][2].raw().value();
         const std::uint64_t prio = cv.priority[s].value();
         // {priority[16:0], R, G, B}: B in bits 15:0, G 31:16, R 47:32, priority 64:48.
         const std::uint64_t lo = b | (g << 16) | (r << 32) | ((prio & 0xFFFF) << 48);

@@ -5,8 +5,8 @@
 // input gaps and output back-pressure (which the model replays, so it predicts the stalled cycle
 // counts too). Each failure prints the first mismatch in detail.
 #include <cmath>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
@@ -78,7 +78,8 @@ void expect_equal(const ScreenFrame& frame, int raster_log2, int tree_levels, co
   const RtlConfig cfg{raster_log2, tree_levels};
   const CosimResult r = cosim_frame(frame, *rtl, cfg, stalls);
   EXPECT_TRUE(r.comparison.ok()) << r.comparison.mismatches << " mismatches of " << r.comparison.records_compared
-                                 << " records; cycles model " << r.model.cycles << " RTL " << r.rtl.cycles << "\nfirst: " << r.comparison.first;
+                                 << " records; cycles model " << r.model.cycles << " RTL " << r.rtl.cycles
+                                 << "\nfirst: " << r.comparison.first;
   EXPECT_GT(r.comparison.records_compared, 0);
   EXPECT_EQ(r.model.cycles, r.rtl.cycles);
 }
@@ -86,11 +87,11 @@ void expect_equal(const ScreenFrame& frame, int raster_log2, int tree_levels, co
 TEST(Cosim, SinglePolygons) {
   Rng r(1);
   const std::vector<std::vector<std::array<double, 2>>> shapes = {
-      {{-0.5, -0.5}, {0.6, -0.3}, {0.0, 0.7}},                  // triangle
-      {{-0.2, -0.2}, {0.2, -0.2}, {0.2, 0.2}, {-0.2, 0.2}},     // square
-      {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}},                     // the whole screen
-      {{0.01, 0.01}, {0.03, 0.012}, {0.02, 0.04}},              // sub-pixel
-      {{-0.9, 0.2}, {0.9, 0.22}, {0.9, 0.24}},                  // sliver
+      {{-0.5, -0.5}, {0.6, -0.3}, {0.0, 0.7}},               // triangle
+      {{-0.2, -0.2}, {0.2, -0.2}, {0.2, 0.2}, {-0.2, 0.2}},  // square
+      {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}},                  // the whole screen
+      {{0.01, 0.01}, {0.03, 0.012}, {0.02, 0.04}},           // sub-pixel
+      {{-0.9, 0.2}, {0.9, 0.22}, {0.9, 0.24}},               // sliver
   };
   for (const auto& xy : shapes) {
     ScreenFrame f = empty_frame(64);
@@ -113,7 +114,9 @@ TEST(Cosim, Slivers) {
     const double x0 = uniform(r, -1, 1), y0 = uniform(r, -1, 1), x1 = uniform(r, -1, 1), y1 = uniform(r, -1, 1);
     const double w = uniform(r, 0.001, 0.03);
     const double dx = x1 - x0, dy = y1 - y0, len = std::hypot(dx, dy) + 1e-9;
-    f.polygons.push_back(polygon({{x0, y0}, {x1, y1}, {std::clamp(x1 - dy / len * w, -1.0, 1.0), std::clamp(y1 + dx / len * w, -1.0, 1.0)}}, 10 + k, r));
+    f.polygons.push_back(polygon(
+        {{x0, y0}, {x1, y1}, {std::clamp(x1 - dy / len * w, -1.0, 1.0), std::clamp(y1 + dx / len * w, -1.0, 1.0)}},
+        10 + k, r));
   }
   for (int t = 1; t <= 2; ++t) expect_equal(f, 6, t);
 }

@@ -1,8 +1,8 @@
 // libFuzzer target: `cig raster` on a small raster. A polygon list the loader accepts is drawn by
 // every engine at 32 x 32 (its geometry is in screen units, so any raster shows it); each must give
 // a whole image and an owner per pixel.
-#include "fuzz_input.hpp"
 #include "frame/screen_frame.hpp"
+#include "fuzz_input.hpp"
 #include "registry/engine_registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -50,7 +50,7 @@ namespace {
 // Standard headers hls/ may include: fixed-width integer typedefs, size_t / ptrdiff_t, integer
 // limits as macros, and compile-time type traits. None of them declares a function that runs at
 // run time, allocates or touches floating point.
-const std::set<std::string> kAllowedStdHeaders = {"cstdint", "cstddef", "climits", "type_traits",
+const std::set<std::string> kAllowedStdHeaders = {"cstdint",  "cstddef",  "climits", "type_traits",
                                                   "stdint.h", "stddef.h", "limits.h"};
 // Included by the generated translation unit before the poison pragma (their own code may use
 // float and the other poisoned identifiers).
@@ -58,40 +58,51 @@ const char* const kPreIncluded[] = {"cstdint", "cstddef", "climits", "type_trait
 
 // Every other standard header (C++23 and the C library) is replaced by a file that fails.
 const char* const kPoisonedStdHeaders[] = {
-    "algorithm", "any", "array", "atomic", "barrier", "bit", "bitset", "cassert", "ccomplex", "cctype",
-    "cerrno", "cfenv", "cfloat", "charconv", "chrono", "cinttypes", "ciso646", "clocale", "cmath",
-    "codecvt", "compare", "complex", "concepts", "condition_variable", "coroutine", "csetjmp", "csignal",
-    "cstdalign", "cstdarg", "cstdbool", "cstdio", "cstdlib", "cstring", "ctgmath", "ctime", "cuchar",
-    "cwchar", "cwctype", "deque", "exception", "execution", "expected", "filesystem", "flat_map",
-    "flat_set", "format", "forward_list", "fstream", "functional", "future", "generator",
-    "initializer_list", "iomanip", "ios", "iosfwd", "iostream", "istream", "iterator", "latch", "limits",
-    "list", "locale", "map", "mdspan", "memory", "memory_resource", "mutex", "new", "numbers", "numeric",
-    "optional", "ostream", "print", "queue", "random", "ranges", "ratio", "regex", "scoped_allocator",
-    "semaphore", "set", "shared_mutex", "source_location", "span", "spanstream", "sstream", "stack",
-    "stacktrace", "stdexcept", "stdfloat", "stop_token", "streambuf", "string", "string_view",
-    "strstream", "syncstream", "system_error", "thread", "tuple", "typeindex", "typeinfo",
-    "unordered_map", "unordered_set", "utility", "valarray", "variant", "vector", "version",
+    "algorithm", "any", "array", "atomic", "barrier", "bit", "bitset", "cassert", "ccomplex", "cctype", "cerrno",
+    "cfenv", "cfloat", "charconv", "chrono", "cinttypes", "ciso646", "clocale", "cmath", "codecvt", "compare",
+    "complex", "concepts", "condition_variable", "coroutine", "csetjmp", "csignal", "cstdalign", "cstdarg", "cstdbool",
+    "cstdio", "cstdlib", "cstring", "ctgmath", "ctime", "cuchar", "cwchar", "cwctype", "deque", "exception",
+    "execution", "expected", "filesystem", "flat_map", "flat_set", "format", "forward_list", "fstream", "functional",
+    "future", "generator", "initializer_list", "iomanip", "ios", "iosfwd", "iostream", "istream", "iterator", "latch",
+    "limits", "list", "locale", "map", "mdspan", "memory", "memory_resource", "mutex", "new", "numbers", "numeric",
+    "optional", "ostream", "print", "queue", "random", "ranges", "ratio", "regex", "scoped_allocator", "semaphore",
+    "set", "shared_mutex", "source_location", "span", "spanstream", "sstream", "stack", "stacktrace", "stdexcept",
+    "stdfloat", "stop_token", "streambuf", "string", "string_view", "strstream", "syncstream", "system_error", "thread",
+    "tuple", "typeindex", "typeinfo", "unordered_map", "unordered_set", "utility", "valarray", "variant", "vector",
+    "version",
     // C library
-    "assert.h", "complex.h", "ctype.h", "errno.h", "fenv.h", "float.h", "inttypes.h", "iso646.h",
-    "locale.h", "math.h", "setjmp.h", "signal.h", "stdalign.h", "stdarg.h", "stdatomic.h", "stdbool.h",
-    "stdio.h", "stdlib.h", "string.h", "tgmath.h", "threads.h", "time.h", "uchar.h", "wchar.h",
-    "wctype.h", "malloc.h", "alloca.h", "memory.h", "strings.h"};
+    "assert.h", "complex.h", "ctype.h", "errno.h", "fenv.h", "float.h", "inttypes.h", "iso646.h", "locale.h", "math.h",
+    "setjmp.h", "signal.h", "stdalign.h", "stdarg.h", "stdatomic.h", "stdbool.h", "stdio.h", "stdlib.h", "string.h",
+    "tgmath.h", "threads.h", "time.h", "uchar.h", "wchar.h", "wctype.h", "malloc.h", "alloca.h", "memory.h",
+    "strings.h"};
 
 // Identifiers poisoned in the translation unit, and the rule each one breaks.
-const std::map<std::string, std::string> kPoisoned = {
-    {"float", "floating-point"},       {"double", "floating-point"},
-    {"__float128", "floating-point"},  {"__fp16", "floating-point"},
-    {"__bf16", "floating-point"},      {"_Float16", "floating-point"},
-    {"_Float32", "floating-point"},    {"_Float64", "floating-point"},
-    {"_Float128", "floating-point"},   {"while", "while-loop"},
-    {"do", "while-loop"},              {"goto", "goto"},
-    {"new", "dynamic-memory"},         {"malloc", "dynamic-memory"},
-    {"calloc", "dynamic-memory"},      {"realloc", "dynamic-memory"},
-    {"aligned_alloc", "dynamic-memory"}, {"alloca", "dynamic-memory"},
-    {"__builtin_malloc", "dynamic-memory"}, {"__builtin_alloca", "dynamic-memory"},
-    {"virtual", "virtual"},            {"throw", "exceptions"},
-    {"try", "exceptions"},             {"catch", "exceptions"},
-    {"typeid", "rtti"},                {"dynamic_cast", "rtti"}};
+const std::map<std::string, std::string> kPoisoned = {{"float", "floating-point"},
+                                                      {"double", "floating-point"},
+                                                      {"__float128", "floating-point"},
+                                                      {"__fp16", "floating-point"},
+                                                      {"__bf16", "floating-point"},
+                                                      {"_Float16", "floating-point"},
+                                                      {"_Float32", "floating-point"},
+                                                      {"_Float64", "floating-point"},
+                                                      {"_Float128", "floating-point"},
+                                                      {"while", "while-loop"},
+                                                      {"do", "while-loop"},
+                                                      {"goto", "goto"},
+                                                      {"new", "dynamic-memory"},
+                                                      {"malloc", "dynamic-memory"},
+                                                      {"calloc", "dynamic-memory"},
+                                                      {"realloc", "dynamic-memory"},
+                                                      {"aligned_alloc", "dynamic-memory"},
+                                                      {"alloca", "dynamic-memory"},
+                                                      {"__builtin_malloc", "dynamic-memory"},
+                                                      {"__builtin_alloca", "dynamic-memory"},
+                                                      {"virtual", "virtual"},
+                                                      {"throw", "exceptions"},
+                                                      {"try", "exceptions"},
+                                                      {"catch", "exceptions"},
+                                                      {"typeid", "rtti"},
+                                                      {"dynamic_cast", "rtti"}};
 
 const char* const kWaiverTag = "hls-subset-ok:";
 const char* const kHelperTag = "hls-subset-helper:";
@@ -170,9 +181,8 @@ struct Lexed {
   std::string helper_reason;
 };
 
-const char* const kPuncts[] = {">>=", "<<=", "->*", "...", "::", "->", "++", "--", "<<", ">>", "<=",
-                               ">=",  "==",  "!=",  "&&",  "||", "+=", "-=", "*=", "/=", "%=", "&=",
-                               "|=",  "^=",  ".*",  "##"};
+const char* const kPuncts[] = {">>=", "<<=", "->*", "...", "::", "->", "++", "--", "<<", ">>", "<=", ">=", "==",
+                               "!=",  "&&",  "||",  "+=",  "-=", "*=", "/=", "%=", "&=", "|=", "^=", ".*", "##"};
 
 bool ident_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || static_cast<unsigned char>(c) >= 0x80;
@@ -285,8 +295,8 @@ Lexed lex(const std::string& s) {
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_' || static_cast<unsigned char>(c) >= 0x80) {
       while (i < n && ident_char(s[i])) ++i;
       const std::string id = s.substr(start, i - start);
-      const bool prefix = id == "L" || id == "u" || id == "U" || id == "u8" || id == "R" || id == "LR" ||
-                          id == "uR" || id == "UR" || id == "u8R";
+      const bool prefix = id == "L" || id == "u" || id == "U" || id == "u8" || id == "R" || id == "LR" || id == "uR" ||
+                          id == "UR" || id == "u8R";
       if (prefix && i < n && s[i] == '"' && id.back() == 'R') {  // raw string
         const size_t open = s.find('(', i);
         const std::string delim = open == std::string::npos ? "" : s.substr(i + 1, open - i - 1);
@@ -403,8 +413,7 @@ void collect_template_params(const Tokens& ts, std::set<std::string>& out) {
     int angle = 1, paren = 0;
     std::vector<const Token*> param;
     auto finish = [&]() {
-      if (!param.empty() && param[0]->text != "class" && param[0]->text != "typename" &&
-          param[0]->text != "template") {
+      if (!param.empty() && param[0]->text != "class" && param[0]->text != "typename" && param[0]->text != "template") {
         size_t end = param.size();
         for (size_t k = 0; k < param.size(); ++k)
           if (param[k]->text == "=") {
@@ -442,20 +451,56 @@ void collect_template_params(const Tokens& ts, std::set<std::string>& out) {
 // ---- Source scan --------------------------------------------------------------------------------
 
 bool is_float_literal(const std::string& t) {
-  if (t.size() > 1 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X'))
-    return t.find_first_of(".pP") != std::string::npos;
+  if (t.size() > 1 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) return t.find_first_of(".pP") != std::string::npos;
   return t.find_first_of(".eE") != std::string::npos;
 }
 
 bool allowed_std_name(const std::string& n) {
-  static const std::set<std::string> exact = {
-      "size_t", "ptrdiff_t", "nullptr_t", "max_align_t", "byte", "intmax_t", "uintmax_t", "intptr_t",
-      "uintptr_t", "enable_if", "enable_if_t", "conditional", "conditional_t", "integral_constant",
-      "bool_constant", "true_type", "false_type", "conjunction", "conjunction_v", "disjunction",
-      "disjunction_v", "negation", "negation_v", "void_t", "decay", "decay_t", "common_type",
-      "common_type_t", "underlying_type", "underlying_type_t", "make_signed", "make_signed_t",
-      "make_unsigned", "make_unsigned_t", "alignment_of", "alignment_of_v", "rank", "rank_v", "extent",
-      "extent_v", "declval", "type_identity", "type_identity_t", "remove_cvref", "remove_cvref_t"};
+  static const std::set<std::string> exact = {"size_t",
+                                              "ptrdiff_t",
+                                              "nullptr_t",
+                                              "max_align_t",
+                                              "byte",
+                                              "intmax_t",
+                                              "uintmax_t",
+                                              "intptr_t",
+                                              "uintptr_t",
+                                              "enable_if",
+                                              "enable_if_t",
+                                              "conditional",
+                                              "conditional_t",
+                                              "integral_constant",
+                                              "bool_constant",
+                                              "true_type",
+                                              "false_type",
+                                              "conjunction",
+                                              "conjunction_v",
+                                              "disjunction",
+                                              "disjunction_v",
+                                              "negation",
+                                              "negation_v",
+                                              "void_t",
+                                              "decay",
+                                              "decay_t",
+                                              "common_type",
+                                              "common_type_t",
+                                              "underlying_type",
+                                              "underlying_type_t",
+                                              "make_signed",
+                                              "make_signed_t",
+                                              "make_unsigned",
+                                              "make_unsigned_t",
+                                              "alignment_of",
+                                              "alignment_of_v",
+                                              "rank",
+                                              "rank_v",
+                                              "extent",
+                                              "extent_v",
+                                              "declval",
+                                              "type_identity",
+                                              "type_identity_t",
+                                              "remove_cvref",
+                                              "remove_cvref_t"};
   if (exact.count(n)) return true;
   for (const char* p : {"is_", "has_", "remove_", "add_"})
     if (starts_with(n, p)) return true;
@@ -527,8 +572,7 @@ class Scanner {
       }
       if (t.kind == Token::kPunct) {
         if (x == "(") function_pointer_at(i);
-        if (x == "::" && text(i + 1) == "*")
-          report(t.line, "function-pointer", "pointer to member ('::*')");
+        if (x == "::" && text(i + 1) == "*") report(t.line, "function-pointer", "pointer to member ('::*')");
         continue;
       }
       if (t.kind != Token::kIdent) continue;
@@ -590,7 +634,8 @@ class Scanner {
     while (text(j) == "const" || text(j) == "volatile") ++j;
     if (ident(j) && text(j) != "this") ++j;
     if (text(j) == ")" && text(j + 1) == "(")
-      report(line(i), "function-pointer", "function pointer or function reference declarator '(" + text(i + 1) + "...)(...)'");
+      report(line(i), "function-pointer",
+             "function pointer or function reference declarator '(" + text(i + 1) + "...)(...)'");
   }
 
   // ---- for loops: static bounds ----
@@ -632,7 +677,8 @@ class Scanner {
         bad = t.text;
         return false;
       }
-      static const std::set<std::string> ops = {"+", "-", "*", "/", "%", "<<", ">>", "&", "|", "^", "~", "(", ")", "::"};
+      static const std::set<std::string> ops = {"+", "-", "*", "/", "%", "<<", ">>",
+                                                "&", "|", "^", "~", "(", ")",  "::"};
       if (t.kind == Token::kPunct && ops.count(t.text)) continue;
       bad = t.text;
       return false;
@@ -694,7 +740,8 @@ class Scanner {
       return;
     }
     if (!constant_expr(vb, ve, bad)) {
-      report(at, "loop-bound", "loop variable '" + var + "' starts at " + show_bad(bad) + ", not a compile-time constant" + kForms);
+      report(at, "loop-bound",
+             "loop variable '" + var + "' starts at " + show_bad(bad) + ", not a compile-time constant" + kForms);
       return;
     }
     // condition: i OP C or C OP i
@@ -715,14 +762,15 @@ class Scanner {
       bb = semis[0] + 1;
       be = op;
     } else {
-      report(at, "loop-bound", "the condition must compare the loop variable '" + var + "' alone with a constant bound" + kForms);
+      report(at, "loop-bound",
+             "the condition must compare the loop variable '" + var + "' alone with a constant bound" + kForms);
       return;
     }
     if (!constant_expr(bb, be, bad)) {
       if (bad == "&&" || bad == "||")
-        report(at, "loop-bound", "the condition must be one comparison of the loop variable with a constant bound" + kForms);
-      else
-        report(at, "loop-bound", "loop bound " + show_bad(bad) + " is not a compile-time constant" + kForms);
+        report(at, "loop-bound",
+               "the condition must be one comparison of the loop variable with a constant bound" + kForms);
+      else report(at, "loop-bound", "loop bound " + show_bad(bad) + " is not a compile-time constant" + kForms);
       return;
     }
     // increment: ++i, i++, --i, i--, or i op= C (op one of + - * / << >>)
@@ -732,8 +780,9 @@ class Scanner {
                                   (text(ib + 1) == var && (text(ib) == "++" || text(ib) == "--")));
     const bool stepc = n >= 3 && text(ib) == var && compound.count(text(ib + 1)) && constant_expr(ib + 2, close, bad);
     if (!step1 && !stepc) {
-      report(at, "loop-bound", "the increment must be ++" + var + ", " + var + "++, --" + var + ", " + var +
-                                   "--, or " + var + " op= C (op: + - * / << >>, C constant)" + kForms);
+      report(at, "loop-bound",
+             "the increment must be ++" + var + ", " + var + "++, --" + var + ", " + var + "--, or " + var +
+                 " op= C (op: + - * / << >>, C constant)" + kForms);
       return;
     }
     // The body must not assign the loop variable.
@@ -744,13 +793,16 @@ class Scanner {
       for (e = b; e < ts_->size() && text(e) != ";"; ++e)
         if ((text(e) == "(" || text(e) == "[" || text(e) == "{") && match_[e] > 0) e = static_cast<size_t>(match_[e]);
     }
-    static const std::set<std::string> assign = {"=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "|=", "^=", "++", "--"};
+    static const std::set<std::string> assign = {
+        "=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "|=", "^=", "++", "--"};
     for (size_t j = b; j < e && j < ts_->size(); ++j) {
       if (text(j) != var) continue;
       const std::string& p = text(j - 1);
-      if (p == "." || p == "->" || p == "::" || ident(j - 1) || p == ">" || p == "&" || p == "*") continue;  // member, declaration
+      if (p == "." || p == "->" || p == "::" || ident(j - 1) || p == ">" || p == "&" || p == "*")
+        continue;  // member, declaration
       if (assign.count(text(j + 1)) || p == "++" || p == "--") {
-        report(line(j), "loop-bound", "loop variable '" + var + "' is modified in the loop body (the trip count must be static)");
+        report(line(j), "loop-bound",
+               "loop variable '" + var + "' is modified in the loop body (the trip count must be static)");
         return;
       }
     }
@@ -805,7 +857,8 @@ class Scanner {
         continue;
       }
       if (y == ";" || y == "{" || y == "}") break;
-      if (y == ":" && j > 0 && (text(j - 1) == "public" || text(j - 1) == "private" || text(j - 1) == "protected")) break;
+      if (y == ":" && j > 0 && (text(j - 1) == "public" || text(j - 1) == "private" || text(j - 1) == "protected"))
+        break;
       head.push_back(&(*ts_)[j]);
     }
     std::reverse(head.begin(), head.end());
@@ -915,7 +968,7 @@ class Checker {
  public:
   fs::path root, work, cxx;
   unsigned jobs = 1;
-  bool temp_work = false;  // remove the work folder after a clean run
+  bool temp_work = false;        // remove the work folder after a clean run
   std::vector<fs::path> inputs;  // canonical files and directories as given
   std::vector<fs::path> headers;
   std::set<Violation> violations;
@@ -1037,10 +1090,23 @@ class Checker {
     f << "#undef HLS_SUBSET_ALLOWED_CONTEXT\n#pragma GCC poison";
     for (const auto& [id, rule] : kPoisoned) f << " " << id;
     f << "\n#include \"" << h.string() << "\"\n";
-    j.args = {cxx.string(), "-std=c++17", "-D__SYNTHESIS__", "-UCIG_HLS_SYSTEMC", "-I" + (work / "poisoned").string(),
-              "-I" + root.string(), "-H", "-c", "-O0", "-fkeep-inline-functions", "-fcallgraph-info",
-              "-fno-diagnostics-show-caret", "-fdiagnostics-color=never", "-fmax-errors=50",
-              "-o", j.obj.string(), j.tu.string()};
+    j.args = {cxx.string(),
+              "-std=c++17",
+              "-D__SYNTHESIS__",
+              "-UCIG_HLS_SYSTEMC",
+              "-I" + (work / "poisoned").string(),
+              "-I" + root.string(),
+              "-H",
+              "-c",
+              "-O0",
+              "-fkeep-inline-functions",
+              "-fcallgraph-info",
+              "-fno-diagnostics-show-caret",
+              "-fdiagnostics-color=never",
+              "-fmax-errors=50",
+              "-o",
+              j.obj.string(),
+              j.tu.string()};
     return j;
   }
 
@@ -1091,11 +1157,13 @@ class Checker {
         ++recognised;
         if (is_under(child, poisoned)) {
           add(parent, include_line(parent, child), "forbidden-header",
-              "<" + name + "> is not in the HLS subset (allowed standard headers: <cstdint>, <cstddef>, <climits>, <type_traits>)");
+              "<" + name +
+                  "> is not in the HLS subset (allowed standard headers: <cstdint>, <cstddef>, <climits>, <type_traits>)");
           forbidden_header = true;
         } else if (!kAllowedStdHeaders.count(name) || is_under(child, root)) {
           add(parent, include_line(parent, child), "forbidden-header",
-              "includes '" + show(child) + "': hls/ headers include only hls/ headers and the allowed standard headers");
+              "includes '" + show(child) +
+                  "': hls/ headers include only hls/ headers and the allowed standard headers");
           forbidden_header = true;
         }
         continue;
@@ -1141,7 +1209,8 @@ class Checker {
       } else if (hls_owned(f)) {
         add(f, line, "compile", msg);
       } else {
-        add(cf.empty() ? j.header : cf, cf.empty() ? 1 : cl, "compile", msg + " [in " + show(f) + ":" + std::to_string(line) + "]");
+        add(cf.empty() ? j.header : cf, cf.empty() ? 1 : cl, "compile",
+            msg + " [in " + show(f) + ":" + std::to_string(line) + "]");
       }
     }
     if (suppressed > 0)
@@ -1211,9 +1280,11 @@ class Checker {
         std::string file;
         int line = 0;
         if (location(at, file, line) && hls_owned(canon(file)))
-          add(canon(file), line, "indirect-call", "'" + nodes[s].sig + "' calls through a function pointer or a virtual function");
+          add(canon(file), line, "indirect-call",
+              "'" + nodes[s].sig + "' calls through a function pointer or a virtual function");
         else
-          add(nodes[s].file, nodes[s].line, "indirect-call", "'" + nodes[s].sig + "' calls through a function pointer or a virtual function");
+          add(nodes[s].file, nodes[s].line, "indirect-call",
+              "'" + nodes[s].sig + "' calls through a function pointer or a virtual function");
       } else if (owned(t)) {
         adj[s].insert(t);
       }
@@ -1302,19 +1373,23 @@ class Checker {
       for (const Job& j : all)
         if (!WIFEXITED(j.status) || WEXITSTATUS(j.status) > 1)
           std::cerr << "hls_subset_check: the compiler did not run normally for " << show(j.header) << " ("
-                    << (WIFEXITED(j.status) ? WEXITSTATUS(j.status) == 127 ? std::string("could not be started")
-                                                                          : "exit status " + std::to_string(WEXITSTATUS(j.status))
+                    << (WIFEXITED(j.status) ? WEXITSTATUS(j.status) == 127
+                                                  ? std::string("could not be started")
+                                                  : "exit status " + std::to_string(WEXITSTATUS(j.status))
                                             : "signal " + std::to_string(WTERMSIG(j.status)))
                     << "; " << cxx.string() << "); see " << j.err.string() << "\n";
       return 2;
     }
     for (const Job& j : all) {
       if (parse_log(j) == 0 && WEXITSTATUS(j.status) != 0) {
-        add(j.header, 1, "compile", "the compiler failed without a diagnostic this check understands; see " + j.err.string());
+        add(j.header, 1, "compile",
+            "the compiler failed without a diagnostic this check understands; see " + j.err.string());
         temp_work = false;  // keep the log
       }
       if (WEXITSTATUS(j.status) == 0) parse_callgraph(j);
-      else notes.push_back("note: no call-graph check (recursion, indirect calls) for " + show(j.header) + ": it does not compile");
+      else
+        notes.push_back("note: no call-graph check (recursion, indirect calls) for " + show(j.header) +
+                        ": it does not compile");
     }
     for (const Violation& v : violations)
       std::cout << show(v.file) << ":" << v.line << ": " << v.rule << ": " << v.message << "\n";

@@ -25,9 +25,7 @@ class Digest {
 
   // One value: its 8 bytes, least significant first (FNV-1a is defined on octets).
   void add(std::uint64_t v) {
-    for (int b = 0; b < 8; ++b) {
-      h_ = (h_ ^ ((v >> (8 * b)) & 0xFFu)) * kPrime;
-    }
+    for (int b = 0; b < 8; ++b) { h_ = (h_ ^ ((v >> (8 * b)) & 0xFFu)) * kPrime; }
     ++count_;
   }
   void add_signed(std::int64_t v) { add(static_cast<std::uint64_t>(v)); }

@@ -74,7 +74,7 @@ inline int rne_code(i128 p, i128 q, int base_exp) {
     int lp = 0, lq = 0;
     for (i128 t = p; t > 1; t >>= 1) ++lp;
     for (i128 t = q; t > 1; t >>= 1) ++lq;
-    k = lp - lq;  // within one of the truth
+    k = lp - lq;                // within one of the truth
     auto ge_pow = [&](int e) {  // p/q >= 2^e ?
       return e >= 0 ? p >= (q << e) : (p << -e) >= q;
     };
@@ -131,7 +131,7 @@ inline LerpVerdict judge_lerp(int ca, int cb, std::int64_t num, std::int64_t den
   const i128 A = scaled(siga, ea), B = scaled(sigb, eb);
   const i128 da = (ea < emax && d > 12) ? U : 0, db = (eb < emax && d > 12) ? U : 0;
   const i128 n = num, q = den;
-  const i128 v2 = 2 * (A * q + (B - A) * n);              // 2 * den * v
+  const i128 v2 = 2 * (A * q + (B - A) * n);                            // 2 * den * v
   const i128 e2 = 2 * da * abs128(q - n) + 2 * db * abs128(n) + U * q;  // 2 * den * E
   LerpVerdict out;
   out.rne = rne_code(v2, 2 * q, base);
@@ -177,11 +177,15 @@ inline std::vector<std::pair<int, int>> hull(std::vector<std::pair<int, int>> pt
   std::vector<std::pair<int, int>> h(2 * pts.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && cross(h[k - 2].first, h[k - 2].second, h[k - 1].first, h[k - 1].second, pts[i].first, pts[i].second) <= 0) --k;
+    while (k >= 2 &&
+           cross(h[k - 2].first, h[k - 2].second, h[k - 1].first, h[k - 1].second, pts[i].first, pts[i].second) <= 0)
+      --k;
     h[k++] = pts[i];
   }
   for (std::size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && cross(h[k - 2].first, h[k - 2].second, h[k - 1].first, h[k - 1].second, pts[i - 1].first, pts[i - 1].second) <= 0) --k;
+    while (k >= t && cross(h[k - 2].first, h[k - 2].second, h[k - 1].first, h[k - 1].second, pts[i - 1].first,
+                           pts[i - 1].second) <= 0)
+      --k;
     h[k++] = pts[i - 1];
   }
   h.resize(k - 1);
@@ -200,8 +204,13 @@ enum class Shape { kLarge, kMedium, kSmall, kSliver, kBorder, kDegenerate, kColl
 inline IntPolygon random_polygon(Rng& rng, Shape shape, int id) {
   if (shape == Shape::kAny) {
     const int r = int(below(rng, 100));
-    shape = r < 30 ? Shape::kLarge : r < 55 ? Shape::kMedium : r < 70 ? Shape::kSmall : r < 82 ? Shape::kSliver
-          : r < 92 ? Shape::kBorder : r < 95 ? Shape::kDegenerate : Shape::kCollinearVertex;
+    shape = r < 30   ? Shape::kLarge
+            : r < 55 ? Shape::kMedium
+            : r < 70 ? Shape::kSmall
+            : r < 82 ? Shape::kSliver
+            : r < 92 ? Shape::kBorder
+            : r < 95 ? Shape::kDegenerate
+                     : Shape::kCollinearVertex;
   }
   IntPolygon p;
   p.id = id;
@@ -212,16 +221,26 @@ inline IntPolygon random_polygon(Rng& rng, Shape shape, int id) {
   for (int attempt = 0; attempt < 100 && h.size() < 3; ++attempt) {
     std::int64_t extent = 0, cx = between(rng, 0, 4095), cy = between(rng, 0, 4095);
     switch (shape) {
-      case Shape::kLarge: extent = between(rng, 300, 2600); break;
-      case Shape::kMedium: extent = between(rng, 30, 300); break;
-      case Shape::kSmall: extent = between(rng, 2, 30); break;
-      case Shape::kSliver: extent = between(rng, 100, 3000); break;
+      case Shape::kLarge:
+        extent = between(rng, 300, 2600);
+        break;
+      case Shape::kMedium:
+        extent = between(rng, 30, 300);
+        break;
+      case Shape::kSmall:
+        extent = between(rng, 2, 30);
+        break;
+      case Shape::kSliver:
+        extent = between(rng, 100, 3000);
+        break;
       case Shape::kBorder:
         extent = between(rng, 50, 1500);
         if (below(rng, 2)) cx = below(rng, 2) ? between(rng, -400, 60) : between(rng, 4035, 4500);
         else cy = below(rng, 2) ? between(rng, -400, 60) : between(rng, 4035, 4500);
         break;
-      default: extent = between(rng, 20, 1500); break;
+      default:
+        extent = between(rng, 20, 1500);
+        break;
     }
     // Columns of the affine map (units of extent / 1024 per disc unit).
     std::int64_t a = between(rng, -1024, 1024), c = between(rng, -1024, 1024);
@@ -320,7 +339,7 @@ inline FormattedPrimitiveT<Twin> twin_input(const IntPolygon& p) {
 struct ExactCoverage {
   int n = 0;
   std::int64_t x[kMaxVertices], y[kMaxVertices];  // half units
-  int orient = 0;                                  // sign of the math-orientation area
+  int orient = 0;                                 // sign of the math-orientation area
   explicit ExactCoverage(const IntPolygon& p) {
     n = p.n;
     for (int k = 0; k < n; ++k) {
@@ -408,7 +427,8 @@ inline std::vector<IntPolygon> random_tiling(Rng& rng) {
       }
       for (int halving = 0; halving < 12; ++halving) {
         pos[v] = {std::clamp(target.first, 0, 4095), std::clamp(target.second, 0, 4095)};
-        if (std::all_of(incident[v].begin(), incident[v].end(), [&](std::size_t t) { return area2(tris[t]) >= 0; })) break;
+        if (std::all_of(incident[v].begin(), incident[v].end(), [&](std::size_t t) { return area2(tris[t]) >= 0; }))
+          break;
         pos[v] = home;
         target = {home.first + (target.first - home.first) / 2, home.second + (target.second - home.second) / 2};
       }

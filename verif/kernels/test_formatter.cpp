@@ -19,9 +19,9 @@
 #include <gtest/gtest.h>
 
 #include "digest.hpp"
+#include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
 #include "hls/formatter/formatter.hpp"
-#include "formatter/formatter_twin.hpp"
 
 namespace cig::hls {
 namespace {
@@ -30,7 +30,7 @@ namespace fd = formatter_detail;
 using i128 = __int128;
 
 #ifdef CIG_HLS_SYSTEMC
-constexpr int kRandomScale = 8;   // random-test sizes: 100000 * kRandomScale and the like
+constexpr int kRandomScale = 8;  // random-test sizes: 100000 * kRandomScale and the like
 #else
 constexpr int kRandomScale = 16;
 #endif
@@ -75,9 +75,9 @@ int ref_round_scaled(double x, int mult, int k, int max) {
   if (std::isnan(x) || x <= 0) return 0;
   if (std::isinf(x)) return max;
   int e = 0;
-  const double m = std::frexp(x, &e);                        // x = m * 2^e, m in [0.5, 1)
+  const double m = std::frexp(x, &e);                           // x = m * 2^e, m in [0.5, 1)
   const i128 n = i128(std::int64_t(std::ldexp(m, 53))) * mult;  // x * mult = n * 2^(e - 53)
-  const int s = e - 53 + k + 1;                              // 2 * x * mult * 2^k = n * 2^s
+  const int s = e - 53 + k + 1;                                 // 2 * x * mult * 2^k = n * 2^s
   i128 twice;
   if (s >= 0) {
     if (s > 40) return max;
@@ -85,7 +85,7 @@ int ref_round_scaled(double x, int mult, int k, int max) {
   } else {
     twice = -s >= 120 ? 0 : n >> -s;  // floor(2y)
   }
-  const i128 r = (twice + 1) >> 1;   // floor(y + 1/2)
+  const i128 r = (twice + 1) >> 1;  // floor(y + 1/2)
   return r > max ? max : int(r);
 }
 
@@ -98,9 +98,9 @@ int ref_zfloat(double z) {
   if (!(z > 0)) return 0;
   if (std::isinf(z)) return 0x7FFF;
   int e = 0;
-  const double m = std::frexp(z, &e);   // z = (2m) * 2^(e - 1), 2m in [1, 2)
+  const double m = std::frexp(z, &e);  // z = (2m) * 2^(e - 1), 2m in [1, 2)
   int E = e - 1 + 127;
-  double q = std::nearbyint(m * 256);   // 8-bit significand 128..256, exact scale
+  double q = std::nearbyint(m * 256);  // 8-bit significand 128..256, exact scale
   if (q == 256) {
     q = 128;
     E += 1;
@@ -153,14 +153,12 @@ void check_scaled_floor(std::mt19937_64& rng, int n) {
   for (int t = 0; t < n; ++t) {
     // Arbitrary patterns, and values whose scaled magnitude is near 2^0 .. 2^62.
     const double x1 = from_raw(rng());
-    const double x2 = std::ldexp(double(std::int64_t(rng() >> 11)) * ((rng() & 1) ? 1 : -1),
-                                 -53 - K + int(rng() % 70) - 4);
+    const double x2 =
+        std::ldexp(double(std::int64_t(rng() >> 11)) * ((rng() & 1) ? 1 : -1), -53 - K + int(rng() % 70) - 4);
     for (double x : {x1, x2}) {
       const fd::ScaledFloor f = fd::scaled_floor<Mult, K>(bits_of(x));
       ASSERT_EQ(f.nan, std::isnan(x));
-      if (!f.nan) {
-        ASSERT_TRUE(i128(f.value.value()) == ref_scaled_floor(x, Mult, K)) << std::hexfloat << x;
-      }
+      if (!f.nan) { ASSERT_TRUE(i128(f.value.value()) == ref_scaled_floor(x, Mult, K)) << std::hexfloat << x; }
     }
   }
 }
@@ -179,8 +177,8 @@ TEST(Formatter, ScaledFloorIsExact) {
   EXPECT_EQ(sf61(DBL_TRUE_MIN).value.value(), 0);
   EXPECT_EQ(sf61(-0.0).value.value(), 0);
   EXPECT_EQ(sf61(-1.0 / 1024 * 1.5).value.value(), -(std::int64_t(3) << 50));  // -1.5 * 2^51
-  EXPECT_EQ(sf61(1.0).value.value(), Int<62>::max_value);  // 2^61 saturates
-  EXPECT_EQ(sf61(-1.0).value.value(), Int<62>::min_value);  // -2^61 exact
+  EXPECT_EQ(sf61(1.0).value.value(), Int<62>::max_value);                      // 2^61 saturates
+  EXPECT_EQ(sf61(-1.0).value.value(), Int<62>::min_value);                     // -2^61 exact
   EXPECT_TRUE(sf61(kNaN).nan);
 }
 
@@ -232,7 +230,7 @@ TEST(Formatter, GridFollowsTheReferenceSumAtTies) {
     const double h = (b - next_down(b)) / 2;
     const double m = b - kGridOffset;  // half-integer in [-2038.5, 2047.5]
     const double t_tie = m - h;
-    if (m - t_tie != h) continue;      // m - h not representable: no tie for this k
+    if (m - t_tie != h) continue;  // m - h not representable: no tie for this k
     const double s_tie = t_tie / kGridScale;
     ASSERT_EQ(kx(s_tie), k + 1) << k;
     ASSERT_EQ(ref_grid(s_tie), k + 1) << k;
@@ -245,10 +243,31 @@ TEST(Formatter, GridFollowsTheReferenceSumAtTies) {
 }
 
 TEST(Formatter, GridSpecialValues) {
-  const double cases[] = {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 2.0, -2.0, 1e300, -1e300, DBL_MAX, -DBL_MAX,
-                          DBL_MIN, -DBL_MIN, DBL_TRUE_MIN, -DBL_TRUE_MIN, from_raw(0x000FFFFFFFFFFFFFull),
-                          kInf, -kInf, 2047.0 / 2048, 2048.0 / 2048, -2047.0 / 2048, -2048.0 / 2048,
-                          -2047.5 / 2048, 2048.5 / 2048};
+  const double cases[] = {0.0,
+                          -0.0,
+                          1.0,
+                          -1.0,
+                          0.5,
+                          -0.5,
+                          2.0,
+                          -2.0,
+                          1e300,
+                          -1e300,
+                          DBL_MAX,
+                          -DBL_MAX,
+                          DBL_MIN,
+                          -DBL_MIN,
+                          DBL_TRUE_MIN,
+                          -DBL_TRUE_MIN,
+                          from_raw(0x000FFFFFFFFFFFFFull),
+                          kInf,
+                          -kInf,
+                          2047.0 / 2048,
+                          2048.0 / 2048,
+                          -2047.0 / 2048,
+                          -2048.0 / 2048,
+                          -2047.5 / 2048,
+                          2048.5 / 2048};
   for (double s : cases) EXPECT_EQ(kx(s), ref_grid(s)) << s;
   EXPECT_EQ(kx(0.0), 2047);
   EXPECT_EQ(kx(-0.0), 2047);
@@ -276,9 +295,7 @@ TEST(Formatter, GridMatchesCModelOnRandomInputs) {
     // Near X = 2047 (|2048*Xs| < 16, bits down to 2^-56): a few of 2^-q below a half-integer.
     const double m4 = double(std::int64_t(rng() % 32) - 16) + 0.5;
     const double s4 = (m4 - std::ldexp(double(1 + rng() % 4), -int(40 + rng() % 18))) / kGridScale;
-    for (double s : {s1, s2, s3, s4}) {
-      ASSERT_EQ(kx(s), ref_grid(s)) << std::hexfloat << s;
-    }
+    for (double s : {s1, s2, s3, s4}) { ASSERT_EQ(kx(s), ref_grid(s)) << std::hexfloat << s; }
   }
 }
 
@@ -296,7 +313,7 @@ TEST(Formatter, ZFloatEveryCode) {
     ASSERT_EQ(ref_zfloat(v), code);
     if (code < 0x7FFF) {
       const double next = zvalue(code + 1);
-      ASSERT_LT(v, next) << code;  // the code order is the value order
+      ASSERT_LT(v, next) << code;         // the code order is the value order
       const double mid = (v + next) / 2;  // 9 significant bits: exact
       ASSERT_EQ(mid - v, next - mid);
       const int even = (code & 1) ? code + 1 : code;
@@ -310,14 +327,14 @@ TEST(Formatter, ZFloatEveryCode) {
   // Saturation below: zero, negatives, binary64 subnormals, everything under 2^-127.
   const double smallest = zvalue(0);
   EXPECT_EQ(smallest, std::ldexp(1.0, -127));
-  for (double z : {0.0, -0.0, -1.0, -kInf, DBL_TRUE_MIN, DBL_MIN, smallest / 2, next_down(smallest),
-                   std::ldexp(1.0, -200)})
+  for (double z :
+       {0.0, -0.0, -1.0, -kInf, DBL_TRUE_MIN, DBL_MIN, smallest / 2, next_down(smallest), std::ldexp(1.0, -200)})
     EXPECT_EQ(kz(z), 0) << z;
   // Saturation above: the largest code, the midpoint past it (rounds to 2^129), 2^129, 1e300, inf.
   const double largest = zvalue(0x7FFF);
   EXPECT_EQ(largest, std::ldexp(255.0, 128 - 7));
-  for (double z : {largest, next_up(largest), (largest + std::ldexp(1.0, 129)) / 2, std::ldexp(1.0, 129), 1e300,
-                   DBL_MAX, kInf})
+  for (double z :
+       {largest, next_up(largest), (largest + std::ldexp(1.0, 129)) / 2, std::ldexp(1.0, 129), 1e300, DBL_MAX, kInf})
     EXPECT_EQ(kz(z), 0x7FFF) << z;
   EXPECT_EQ(kz(next_down(largest)), 0x7FFF);
   // NaN: the largest code (farthest depth).
@@ -329,7 +346,7 @@ TEST(Formatter, ZFloatRandomAgainstExactReference) {
   std::mt19937_64 rng(99);
   const int n = 100000 * kRandomScale;
   for (int t = 0; t < n; ++t) {
-    const double z1 = from_raw(rng());                                      // any pattern
+    const double z1 = from_raw(rng());                                                          // any pattern
     const double z2 = std::ldexp(1.0 + double(rng() >> 11) * 0x1p-53, int(rng() % 270) - 135);  // the code range
     for (double z : {z1, z2}) ASSERT_EQ(kz(z), ref_zfloat(z)) << std::hexfloat << z;
   }
@@ -602,22 +619,32 @@ std::string golden_path() { return std::string(CIG_SOURCE_DIR) + "/verif/golden/
 // The expected output of one field by the references above (X: the C model).
 int reference_output(char field, double x) {
   switch (field) {
-    case 'X': return ref_grid(x);
-    case 'I': return ref_round_scaled(x, 1, 8, 255);
-    case 'D': return ref_round_scaled(x, 1, 11, 7);
-    case 'C': return ref_round_scaled(x, 255, 0, 255);
-    case 'Z': return ref_zfloat(x);
+    case 'X':
+      return ref_grid(x);
+    case 'I':
+      return ref_round_scaled(x, 1, 8, 255);
+    case 'D':
+      return ref_round_scaled(x, 1, 11, 7);
+    case 'C':
+      return ref_round_scaled(x, 255, 0, 255);
+    case 'Z':
+      return ref_zfloat(x);
   }
   return -1;
 }
 
 int kernel_output(char field, double x) {
   switch (field) {
-    case 'X': return kx(x);
-    case 'I': return ki(x);
-    case 'D': return kd(x);
-    case 'C': return kc(x);
-    case 'Z': return kz(x);
+    case 'X':
+      return kx(x);
+    case 'I':
+      return ki(x);
+    case 'D':
+      return kd(x);
+    case 'C':
+      return kc(x);
+    case 'Z':
+      return kz(x);
   }
   return -1;
 }
@@ -627,10 +654,10 @@ int kernel_output(char field, double x) {
 // and commit the file; the reference and kernel are then frozen against it.
 TEST(Formatter, DISABLED_WriteGoldenVectors) {
   std::vector<std::uint64_t> common = {
-      0x0000000000000000ull, 0x8000000000000000ull, 0x7FF0000000000000ull, 0xFFF0000000000000ull,
-      0x7FF8000000000000ull, 0x7FF0000000000001ull, 0xFFF8000000000000ull, 0x0000000000000001ull,
-      0x000FFFFFFFFFFFFFull, 0x0010000000000000ull, 0x7FEFFFFFFFFFFFFFull, 0xFFEFFFFFFFFFFFFFull,
-      raw_bits(1.0), raw_bits(-1.0), raw_bits(0.5), raw_bits(-0.5), raw_bits(2.0), raw_bits(1e-300)};
+      0x0000000000000000ull, 0x8000000000000000ull, 0x7FF0000000000000ull, 0xFFF0000000000000ull, 0x7FF8000000000000ull,
+      0x7FF0000000000001ull, 0xFFF8000000000000ull, 0x0000000000000001ull, 0x000FFFFFFFFFFFFFull, 0x0010000000000000ull,
+      0x7FEFFFFFFFFFFFFFull, 0xFFEFFFFFFFFFFFFFull, raw_bits(1.0),         raw_bits(-1.0),        raw_bits(0.5),
+      raw_bits(-0.5),        raw_bits(2.0),         raw_bits(1e-300)};
   std::mt19937_64 rng(0xF0A7);
   std::ofstream out(golden_path());
   ASSERT_TRUE(out) << golden_path();
@@ -720,7 +747,8 @@ TEST(Formatter, OutputDigest) {
     RawPrimitive r;
     r.is_light = (t % 5) == 0;
     r.n = UInt<5>(3 + t % 14);
-    for (int k = 0; k < kMaxVertices; ++k) r.v[k] = {UInt<64>(rng()), UInt<64>(rng()), UInt<64>(rng()), UInt<64>(rng())};
+    for (int k = 0; k < kMaxVertices; ++k)
+      r.v[k] = {UInt<64>(rng()), UInt<64>(rng()), UInt<64>(rng()), UInt<64>(rng())};
     if (t % 2) r.v[0].xs = bits_of(double(rng() % 4096) / 2048 - 1);
     r.ds = UInt<64>(rng());
     for (int c = 0; c < 3; ++c) r.colour[c] = UInt<64>(rng());

@@ -78,7 +78,8 @@ i128 direct_d(const QuadWindow<P>& root, int e, int n, int level, int x, int y) 
 // f of window (level, x, y) directly: F + D i0 + E j0 at its top-left sample.
 i128 direct_f(const QuadWindow<P>& root, int p, int n, int level, int x, int y) {
   const i128 side = i128(4) << (n - level);
-  return i128(root.f[p].value()) + i128(root.poly.dp_di[p].value()) * x * side + i128(root.poly.dp_dj[p].value()) * y * side;
+  return i128(root.f[p].value()) + i128(root.poly.dp_di[p].value()) * x * side +
+         i128(root.poly.dp_dj[p].value()) * y * side;
 }
 
 // A window's child as the walk needs it even when the PE does not emit it (not covered): its d
@@ -122,8 +123,10 @@ void work_recurrence_exhaustive(int scale, Digest* dg) {
               evaluate_child(w, q, n, false, c);
               const QuadWindow<P> cw = child_of(w, c, q, n);
               const int x = int(cw.x.value()), y = int(cw.y.value());
-              for (int e = 0; e < kQuadMaxEdges; ++e) ASSERT_TRUE(i128(cw.d[e].value()) == direct_d(root, e, n, level, x, y)) << level;
-              for (int p = 0; p < kQuadParams; ++p) ASSERT_TRUE(i128(cw.f[p].value()) == direct_f(root, p, n, level, x, y)) << level;
+              for (int e = 0; e < kQuadMaxEdges; ++e)
+                ASSERT_TRUE(i128(cw.d[e].value()) == direct_d(root, e, n, level, x, y)) << level;
+              for (int p = 0; p < kQuadParams; ++p)
+                ASSERT_TRUE(i128(cw.f[p].value()) == direct_f(root, p, n, level, x, y)) << level;
               if (c.covered) {  // the emitted child is the same window
                 for (int e = 0; e < kQuadMaxEdges; ++e) ASSERT_EQ(c.window.d[e].value(), cw.d[e].value());
                 for (int p = 0; p < kQuadParams; ++p) ASSERT_EQ(c.window.f[p].value(), cw.f[p].value());
@@ -165,7 +168,8 @@ void work_recurrence_paths(int scale, Digest* dg) {
           evaluate_child(w, q, n, false, c);
           w = child_of(w, c, q, n);
           const int x = int(w.x.value()), y = int(w.y.value());
-          for (int e = 0; e < kQuadMaxEdges; ++e) ASSERT_TRUE(i128(w.d[e].value()) == direct_d(root, e, n, level, x, y));
+          for (int e = 0; e < kQuadMaxEdges; ++e)
+            ASSERT_TRUE(i128(w.d[e].value()) == direct_d(root, e, n, level, x, y));
           for (int p = 0; p < kQuadParams; ++p) ASSERT_TRUE(i128(w.f[p].value()) == direct_f(root, p, n, level, x, y));
         }
         if (dg) dg->add_signed(w.f[1].value());
@@ -200,8 +204,12 @@ std::vector<std::uint8_t> covered_samples(const IntPolygon& poly, int n, const E
       if (c.covered && side <= 32 && s.pieces.value() == 1) {
         bool all = true;
         for (int j = y0; j < y0 + side && all; ++j)
-          for (int i = x0; i < x0 + side && all; ++i) all = exact.covers(std::int64_t(lat.half(i)), std::int64_t(lat.half(j)));
-        if (!(c.full == all)) ADD_FAILURE() << "full flag at level " << level << " of " << n << " window (" << x0 << ", " << y0 << "): kernel " << c.full << ", exact " << all << ", opaque " << poly.opaque << ", samples " << c.samples.value();
+          for (int i = x0; i < x0 + side && all; ++i)
+            all = exact.covers(std::int64_t(lat.half(i)), std::int64_t(lat.half(j)));
+        if (!(c.full == all))
+          ADD_FAILURE() << "full flag at level " << level << " of " << n << " window (" << x0 << ", " << y0
+                        << "): kernel " << c.full << ", exact " << all << ", opaque " << poly.opaque << ", samples "
+                        << c.samples.value();
       }
       if (!c.covered) continue;
       if (level < n) {
@@ -235,7 +243,8 @@ void work_coverage(int scale, Digest* dg) {
       const int m = lat.samples();
       for (int j = 0; j < m; ++j)
         for (int i = 0; i < m; ++i) {
-          const bool want = exact.covers(std::int64_t(lat.half(i)), std::int64_t(lat.half(j))) && (poly.opaque || ((i + j) & 1) == 0);
+          const bool want =
+              exact.covers(std::int64_t(lat.half(i)), std::int64_t(lat.half(j))) && (poly.opaque || ((i + j) & 1) == 0);
           const int g = got[std::size_t(j) * std::size_t(m) + std::size_t(i)];
           ASSERT_EQ(g, want ? 1 : 0) << "sample (" << i << ", " << j << ") of polygon " << t << " at N = " << (1 << n);
           covered += g;
@@ -261,7 +270,8 @@ void work_tiling(int scale, Digest* dg) {
         const std::vector<std::uint8_t> got = covered_samples(tri, n, exact, dg);
         for (std::size_t k = 0; k < got.size(); ++k) count[k] += got[k];
       }
-      for (std::size_t k = 0; k < count.size(); ++k) ASSERT_EQ(count[k], 1) << "sample " << k % std::size_t(m) << ", " << k / std::size_t(m);
+      for (std::size_t k = 0; k < count.size(); ++k)
+        ASSERT_EQ(count[k], 1) << "sample " << k % std::size_t(m) << ", " << k / std::size_t(m);
     }
 }
 TEST(QuadtreePe, RandomTilingCoversEverySampleOnce) { work_tiling(kScale, nullptr); }
@@ -375,11 +385,13 @@ TEST(QuadtreeMasks, ClosureIsTheBruteForceFixpoint) {
       for (int yy = 0; yy < (1 << lv); ++yy)
         for (int xx = 0; xx < (1 << lv); ++xx)
           if (want[std::size_t(lv)][std::size_t((yy << lv) + xx)] == 0xFu)
-            want[std::size_t(lv - 1)][std::size_t(((yy >> 1) << (lv - 1)) + (xx >> 1))] |= 1u << (((yy & 1) << 1) | (xx & 1));
+            want[std::size_t(lv - 1)][std::size_t(((yy >> 1) << (lv - 1)) + (xx >> 1))] |=
+                1u << (((yy & 1) << 1) | (xx & 1));
     for (int lv = 0; lv < n; ++lv)
       for (int yy = 0; yy < (1 << lv); ++yy)
         for (int xx = 0; xx < (1 << lv); ++xx)
-          ASSERT_EQ(unsigned(mask_read(*m, lv, xx, yy).value()), want[std::size_t(lv)][std::size_t((yy << lv) + xx)]) << lv;
+          ASSERT_EQ(unsigned(mask_read(*m, lv, xx, yy).value()), want[std::size_t(lv)][std::size_t((yy << lv) + xx)])
+              << lv;
   }
 }
 
@@ -447,7 +459,8 @@ TEST(QuadtreePixel, SampleColoursFollowTheFormula) {
       const std::int64_t i_raw = std::clamp<std::int64_t>(vi, 0, (std::int64_t{1} << (8 + G)) - 1);
       const std::int64_t f9 = std::int64_t(t->fog.f[readme_code(vw, int(px.poly.w_exponent.value()))].raw().value());
       for (int c = 0; c < 3; ++c) {
-        const std::int64_t shade = std::min<std::int64_t>((std::int64_t(px.poly.colour[c].value()) * i_raw + (std::int64_t{1} << (G - 1))) >> G, 65535);
+        const std::int64_t shade = std::min<std::int64_t>(
+            (std::int64_t(px.poly.colour[c].value()) * i_raw + (std::int64_t{1} << (G - 1))) >> G, 65535);
         const std::int64_t mix = std::clamp<std::int64_t>(
             (shade * (256 - f9) + ((std::int64_t(t->fog_colour[c].value()) * f9) << 8) + 128) >> 8, 0, 65535);
         sum[c] += mix;

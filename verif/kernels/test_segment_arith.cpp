@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <iterator>
-#include <string>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -47,10 +47,9 @@ struct Fraction {
   std::int64_t num, den;
 };
 // Interpolation points: the ends, simple fractions, eq. 4's quarter-unit ratios, extrapolations.
-const Fraction kFractions[] = {{0, 1},     {1, 1},         {1, 2},         {1, 3},      {2, 3},     {1, 4},
-                               {3, 4},     {5, 7},         {1, 16380},     {8190, 16380}, {16379, 16380},
-                               {37, 4092}, {-1, 4},        {5, 4},         {-3, 16380}, {16383, 16380},
-                               {6, 4},     {-4, 4}};
+const Fraction kFractions[] = {{0, 1},  {1, 1}, {1, 2},      {1, 3},         {2, 3},         {1, 4},
+                               {3, 4},  {5, 7}, {1, 16380},  {8190, 16380},  {16379, 16380}, {37, 4092},
+                               {-1, 4}, {5, 4}, {-3, 16380}, {16383, 16380}, {6, 4},         {-4, 4}};
 
 int lerp_code(int ca, int cb, std::int64_t num, std::int64_t den) {
   return code_of(zfloat_lerp(zcode(ca), zcode(cb), Int<18>(num), Int<18>(den)));
@@ -93,10 +92,22 @@ void work_zfloat_lerp(Digest* dg) {
   for (int t = 0; t < 60000 * scale_of(dg); ++t) {
     int ea = 0, eb = 0;
     switch (t % 4) {
-      case 0: ea = int(below(rng, 256)); eb = int(std::clamp<std::int64_t>(ea + between(rng, -25, 25), 0, 255)); break;
-      case 1: ea = int(below(rng, 256)); eb = int(below(rng, 256)); break;
-      case 2: ea = int(below(rng, 4)); eb = int(below(rng, 4)); break;        // near the smallest code
-      default: ea = int(between(rng, 252, 255)); eb = int(between(rng, 252, 255)); break;  // the largest
+      case 0:
+        ea = int(below(rng, 256));
+        eb = int(std::clamp<std::int64_t>(ea + between(rng, -25, 25), 0, 255));
+        break;
+      case 1:
+        ea = int(below(rng, 256));
+        eb = int(below(rng, 256));
+        break;
+      case 2:
+        ea = int(below(rng, 4));
+        eb = int(below(rng, 4));
+        break;  // near the smallest code
+      default:
+        ea = int(between(rng, 252, 255));
+        eb = int(between(rng, 252, 255));
+        break;  // the largest
     }
     const int ca = ea * 128 + int(below(rng, 128)), cb = eb * 128 + int(below(rng, 128));
     Fraction f = kFractions[below(rng, std::int64_t(std::size(kFractions)))];
@@ -108,9 +119,9 @@ void work_zfloat_lerp(Digest* dg) {
   }
   // The extremes themselves.
   EXPECT_EQ(lerp_code(0, 0, 1, 2), 0);
-  EXPECT_EQ(lerp_code(0, 5, -4, 4), 0);          // below the smallest value: code 0
+  EXPECT_EQ(lerp_code(0, 5, -4, 4), 0);  // below the smallest value: code 0
   EXPECT_EQ(lerp_code(0x7FFF, 0x7FFF, 1, 2), 0x7FFF);
-  EXPECT_EQ(lerp_code(0x7F00, 0x7FFF, 6, 4), 0x7FFF);  // beyond the largest: saturates
+  EXPECT_EQ(lerp_code(0x7F00, 0x7FFF, 6, 4), 0x7FFF);                   // beyond the largest: saturates
   EXPECT_EQ(lerp_code(127 * 128, 127 * 128 + 3, 1, 2), 127 * 128 + 2);  // 129.5 -> 130 (even)
   EXPECT_EQ(lerp_code(127 * 128, 127 * 128 + 1, 1, 2), 127 * 128 + 0);  // 128.5 -> 128 (even)
   EXPECT_GT(exact, 100000);
@@ -246,7 +257,7 @@ void work_light_segments(Digest* dg) {
   long lights = 0, samples = 0;
   for (int log2 = kMinRasterLog2; log2 <= kMaxRasterLog2; ++log2) {
     const int u = 4096 >> log2;
-    const int span = log2 >= 8 ? u : u / 4;  // a pixel at N >= 256; one sample period (u/4) below
+    const int span = log2 >= 8 ? u : u / 4;    // a pixel at N >= 256; one sample period (u/4) below
     const int x0 = 2047 - (2047 % u) - 1 + u;  // a pixel's first grid unit: u*p - 1
     std::vector<int> xs, ys;
     for (int k = 0; k < span; ++k) xs.push_back(x0 + k);
@@ -267,7 +278,9 @@ void work_light_segments(Digest* dg) {
   EXPECT_GT(samples, 50000);
 }
 
-TEST(LightSegments, CoverageEqualsTheReferenceDiscFine) { work_light_segments<FixedSegmentArith<SegmentFormatFine>>(nullptr); }
+TEST(LightSegments, CoverageEqualsTheReferenceDiscFine) {
+  work_light_segments<FixedSegmentArith<SegmentFormatFine>>(nullptr);
+}
 TEST(LightSegments, CoverageEqualsTheReferenceDiscCoarse) {
   work_light_segments<FixedSegmentArith<SegmentFormatCoarse>>(nullptr);
 }
@@ -381,7 +394,8 @@ void work_area_code(Digest* dg) {
   std::sort(sorted.begin(), sorted.end());
   for (std::size_t k = 0; k + 1 < sorted.size(); ++k) {
     if (sorted[k] >= 0) {
-      ASSERT_GE(DefaultSegmentArith::area_code(Int<32>(sorted[k])), DefaultSegmentArith::area_code(Int<32>(sorted[k + 1])));
+      ASSERT_GE(DefaultSegmentArith::area_code(Int<32>(sorted[k])),
+                DefaultSegmentArith::area_code(Int<32>(sorted[k + 1])));
     }
   }
 }
@@ -415,10 +429,18 @@ void work_overload(Digest* dg) {
       for (int k = 0; k < kAreaCodes; ++k) {
         std::int64_t v = 0;
         switch (mode) {
-          case 0: v = between(rng, 0, cap / 8 + 1); break;
-          case 1: v = below(rng, 3) == 0 ? 0 : between(rng, 0, cap / 3 + 1); break;
-          case 2: v = below(rng, 8) == 0 ? (std::int64_t(1) << 24) - 1 : between(rng, 0, 64); break;
-          default: v = between(rng, 0, 2 * cap / kAreaCodes + 1); break;
+          case 0:
+            v = between(rng, 0, cap / 8 + 1);
+            break;
+          case 1:
+            v = below(rng, 3) == 0 ? 0 : between(rng, 0, cap / 3 + 1);
+            break;
+          case 2:
+            v = below(rng, 8) == 0 ? (std::int64_t(1) << 24) - 1 : between(rng, 0, 64);
+            break;
+          default:
+            v = between(rng, 0, 2 * cap / kAreaCodes + 1);
+            break;
         }
         c.segments[f][k] = UInt<24>(std::uint64_t(v));
       }
@@ -499,8 +521,9 @@ void work_policy_ops(Digest* dg) {
       // Stepping: x + rows * slope, exact in the accumulator, rounded once into X.
       const int rows = int(between(rng, 0, 4095));
       const X st = P::step(x, slope, rows);
-      ASSERT_TRUE(raw_of(st) == clampi(round_half_up(i128(raw_of(x)) + i128(rows) * raw_of(slope),
-                                                      i128(1) << (Fs - Fx)), xmin, xmax));
+      ASSERT_TRUE(
+          raw_of(st) ==
+          clampi(round_half_up(i128(raw_of(x)) + i128(rows) * raw_of(slope), i128(1) << (Fs - Fx)), xmin, xmax));
       add(raw_of(st));
     }
     // Eq. 3 at a quarter-unit Y (anywhere within a row spacing of the edge; beyond its ends t is
@@ -525,13 +548,15 @@ void work_policy_ops(Digest* dg) {
     const X la = X::from_raw_value(between(rng, -(std::int64_t(1) << Fx), std::int64_t(4096) << Fx));
     const X lb = X::from_raw_value(between(rng, -(std::int64_t(1) << Fx), std::int64_t(4096) << Fx));
     const X lx = P::lerp_x(la, lb, num, den);
-    ASSERT_TRUE(raw_of(lx) == raw_of(la) + round_half_up((i128(raw_of(lb)) - raw_of(la)) * num, den)) << raw_of(la) << " " << raw_of(lb) << " " << num << "/" << den << " -> " << raw_of(lx);
+    ASSERT_TRUE(raw_of(lx) == raw_of(la) + round_half_up((i128(raw_of(lb)) - raw_of(la)) * num, den))
+        << raw_of(la) << " " << raw_of(lb) << " " << num << "/" << den << " -> " << raw_of(lx);
     add(raw_of(lx));
     // Video channel: 1/span (24 fractional bits, saturating), t = along / span (16 fractional bits,
     // at most 1), I along the segment, colour x I, fog mix, box filter.
     const X span = X::from_raw_value(t % 9 == 0 ? between(rng, -3, 3) : between(rng, 1, std::int64_t(xmax)));
     const typename P::Reciprocal inv = P::reciprocal(span);
-    const i128 inv_expect = raw_of(span) > 0 ? clampi(round_half_up(i128(1) << (Fx + 24), raw_of(span)), 0, (i128(1) << 32) - 1) : 0;
+    const i128 inv_expect =
+        raw_of(span) > 0 ? clampi(round_half_up(i128(1) << (Fx + 24), raw_of(span)), 0, (i128(1) << 32) - 1) : 0;
     ASSERT_TRUE(i128(inv.raw().value()) == inv_expect) << raw_of(span);
     const X alongx = X::from_raw_value(t % 11 == 0 ? between(rng, -3, 3) : between(rng, 1, std::int64_t(xmax)));
     const typename P::Ratio ratio = P::ratio(alongx, inv);
@@ -546,14 +571,17 @@ void work_policy_ops(Digest* dg) {
     const I il = I::from_raw_value(std::uint64_t(below(rng, std::int64_t(imax) + 1)));
     const I ir = I::from_raw_value(std::uint64_t(below(rng, std::int64_t(imax) + 1)));
     const I li = P::lerp_intensity(il, ir, ratio);
-    ASSERT_TRUE(raw_of(li) == clampi(raw_of(il) + round_half_up((i128(raw_of(ir)) - raw_of(il)) * r_expect, 65536), 0, imax));
+    ASSERT_TRUE(raw_of(li) ==
+                clampi(raw_of(il) + round_half_up((i128(raw_of(ir)) - raw_of(il)) * r_expect, 65536), 0, imax));
     add(raw_of(li));
     const int c = int(below(rng, 256)), fog = int(below(rng, 256));
     const typename P::Sample sh = P::shade(UInt<8>(c), li);
     ASSERT_TRUE(raw_of(sh) == clampi(round_half_up(i128(c) * raw_of(li), i128(1) << Fi), 0, 65535));
     const typename P::FogFactor f = P::FogFactor::from_raw_value(std::uint64_t(below(rng, 257)));
     const typename P::Sample mx = P::mix(sh, UInt<8>(fog), f);
-    ASSERT_TRUE(raw_of(mx) == clampi(round_half_up(i128(raw_of(sh)) * (256 - raw_of(f)) + i128(fog) * 256 * raw_of(f), 256), 0, 65535));
+    ASSERT_TRUE(
+        raw_of(mx) ==
+        clampi(round_half_up(i128(raw_of(sh)) * (256 - raw_of(f)) + i128(fog) * 256 * raw_of(f), 256), 0, 65535));
     add(raw_of(sh));
     add(raw_of(mx));
   }
@@ -563,7 +591,9 @@ void work_policy_ops(Digest* dg) {
     i128 sum = 0;
     const int mode = t % 3;
     for (int k = 0; k < 16; ++k) {
-      const std::int64_t v = mode == 0 ? below(rng, 65536) : mode == 1 ? between(rng, 65280, 65535) : between(rng, 0, 300);
+      const std::int64_t v = mode == 0   ? below(rng, 65536)
+                             : mode == 1 ? between(rng, 65280, 65535)
+                                         : between(rng, 0, 300);
       s16[k] = P::Sample::from_raw_value(std::uint64_t(v));
       sum += v;
     }

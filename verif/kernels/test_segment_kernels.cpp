@@ -59,7 +59,7 @@ struct RefPolygon {
   std::int64_t twice = 0;  // eq. 5-6 without the 1/2
   int code = 0;
   bool valid = false;
-  std::vector<RefEdge> left, right;  // top to bottom
+  std::vector<RefEdge> left, right;          // top to bottom
   std::vector<RefEdge> all_left, all_right;  // with the edges no sample row crosses
   int row_first = 0, row_last = -1, even = 0, odd = 0;
   int rejected = 0, horizontal = 0, vertical = 0;  // edges without a sample row, dY = 0, dX = 0
@@ -201,14 +201,16 @@ void check_edges(const IntPolygon& p, const Lattice& lat, EdgeStats& st, Digest*
       // Eq. 2 per sample row: dx / dy times the row spacing u / 4 grid units, rounded half up once
       // to the slope's Fs fractional bits: raw = floor(dx u 2^Fs / (4 dy) + 1/2). Error <= 1/2 LSB_S,
       // met with equality: checked bit for bit. (|slope| <= 4095 * 64 < 2^18: no saturation.)
-      ASSERT_TRUE(raw_of(k.dx_per_row) == round_half_up(mul2k(dx * lat.u, S::frac_bits), 4 * dy)) << raw_of(k.dx_per_row);
+      ASSERT_TRUE(raw_of(k.dx_per_row) == round_half_up(mul2k(dx * lat.u, S::frac_bits), 4 * dy))
+          << raw_of(k.dx_per_row);
       // The first crossing xa + dx (Y_first - ya) / dy, rounded half up once to the accumulator's
       // fractional bits (the slope's): bit for bit.
       const i128 t2 = lat.half(r.first) - 2 * i128(r.ya);
       ASSERT_TRUE(raw_of(k.x_first) == mul2k(r.xa, A::frac_bits) + round_half_up(mul2k(dx * t2, A::frac_bits), 2 * dy));
       // The twin: its slope is one correctly rounded division of integers times a power of two,
       // |slope| < 2^18, error < 2^18 * 2^-53 = 2^-35; so |fixed - twin| <= LSB_S / 2 + 2^-35.
-      ASSERT_LE(std::abs(value_of(k.dx_per_row) - t.dx_per_row), std::ldexp(1.0, -S::frac_bits - 1) + std::ldexp(1.0, -35));
+      ASSERT_LE(std::abs(value_of(k.dx_per_row) - t.dx_per_row),
+                std::ldexp(1.0, -S::frac_bits - 1) + std::ldexp(1.0, -35));
       // Its crossing xa + (Y - ya) dx / dy: the product is exact (< 2^26, one fractional bit), the
       // division and the addition round once each on values below 2^13: error < 2^-39; so
       // |fixed - twin| <= LSB_A / 2 + 2^-39.
@@ -348,7 +350,9 @@ TEST(EdgeGenerator, HandBuiltCases) {
 std::vector<PolygonEdges<DefaultSegmentArith>> edge_pool(Rng& rng, int count) {
   std::vector<PolygonEdges<DefaultSegmentArith>> pool;
   bool size_seen[kMaxVertices + 2] = {};
-  for (int t = 0; t < 100000 && (int(pool.size()) < count || !std::all_of(size_seen + 3, size_seen + 12, [](bool b) { return b; })); ++t) {
+  for (int t = 0; t < 100000 &&
+                  (int(pool.size()) < count || !std::all_of(size_seen + 3, size_seen + 12, [](bool b) { return b; }));
+       ++t) {
     PolygonEdges<DefaultSegmentArith> e;
     generate_edges<DefaultSegmentArith>(fixed_input(random_polygon(rng, Shape::kAny, int(pool.size()))), 7, e);
     if (!e.valid) continue;
@@ -395,9 +399,7 @@ void work_frame_memory(int scale, Digest* dg) {
     ASSERT_EQ(m.polygons_overflowed.value(), 0u);
     frame[b].clear();
     // The other bank still holds the previous frame.
-    if (round > 0) {
-      EXPECT_EQ(read_all(b ^ 1), frame[b ^ 1]);
-    }
+    if (round > 0) { EXPECT_EQ(read_all(b ^ 1), frame[b ^ 1]); }
     int used = 0, written = 0, overflowed = 0;
     bool filled = false;
     const int polygons = round % 2 == 0 ? 400 : int(below(rng, 8));  // past the capacity, or a few
@@ -527,8 +529,12 @@ class SegmentChecker {
   static constexpr bool kExact = std::is_same_v<Fmt, SegmentFormatFine>;
 
   SegmentChecker(int log2, SegStats& st, Digest* dg)
-      : lat_(log2), g_(LatticeGeometry::for_raster(log2)), st_(st), dg_(dg),
-        segs_(std::make_unique<Segment<P>[]>(kMaxLines)), twin_(std::make_unique<Segment<Twin>[]>(kMaxLines)) {}
+      : lat_(log2),
+        g_(LatticeGeometry::for_raster(log2)),
+        st_(st),
+        dg_(dg),
+        segs_(std::make_unique<Segment<P>[]>(kMaxLines)),
+        twin_(std::make_unique<Segment<Twin>[]>(kMaxLines)) {}
 
   template <class Covered>
   void run(const IntPolygon& p, Covered&& covered) {
@@ -575,8 +581,8 @@ class SegmentChecker {
     const i128 dy2 = 2 * i128(r.yb - r.ya), num = dy2 * r.xa + i128(r.xb - r.xa) * (lat_.half(k) - 2 * i128(r.ya));
     const int m = k - r.first;
     const i128 diff = i128(raw_of(x)) * dy2 - mul2k(num, Fx);  // (X - exact) 2^Fx 2 dy
-    ASSERT_TRUE(within_x_bound(diff, dy2 << Fx, m)) << "row " << k << " X " << value_of(x) << " exact "
-                                                     << double(num) / double(dy2) << " m " << m;
+    ASSERT_TRUE(within_x_bound(diff, dy2 << Fx, m))
+        << "row " << k << " X " << value_of(x) << " exact " << double(num) / double(dy2) << " m " << m;
     const double err = std::abs(double(diff) / double(dy2 << Fx));
     st_.worst_x = std::max(st_.worst_x, std::ldexp(err, Fx));
     st_.worst_x_ratio = std::max(st_.worst_x_ratio, err / x_bound(m));
@@ -727,7 +733,7 @@ class SegmentChecker {
         if (!r) return false;
         const i128 dy2 = 2 * i128(r->yb - r->ya);
         const i128 num = dy2 * r->xa + i128(r->xb - r->xa) * (lat_.half(k) - 2 * i128(r->ya));  // exact X * dy2
-        return within_x_bound(lat_.half(i) * dy2 - 2 * num, 2 * dy2, k - r->first);  // X_i - exact
+        return within_x_bound(lat_.half(i) * dy2 - 2 * num, 2 * dy2, k - r->first);             // X_i - exact
       };
       // The symmetric difference lies between the two left ends and between the two right ends
       // (or is one whole interval when the other is empty).
@@ -760,11 +766,12 @@ class SegmentChecker {
 
 template <class Fmt>
 void report_segments(const char* what, const SegStats& st) {
-  std::printf("%s %s: %ld polygons, %ld segments, %ld rows, %ld samples; X error <= %.3f LSB_X (%.3f of the bound), "
-              "twin %.3f of its bound; %ld differing samples; I/Z ends %ld, %ld clamped to their edge (t up to %.1f unclamped; I up to %.1f "
-              "off the boundary's at yt)\n",
-              what, Fmt::name, st.polygons, st.segments, st.rows, st.samples, st.worst_x, st.worst_x_ratio,
-              st.worst_twin_x, st.differing, st.ends, st.extrapolated, st.max_t, st.worst_i_off_boundary);
+  std::printf(
+      "%s %s: %ld polygons, %ld segments, %ld rows, %ld samples; X error <= %.3f LSB_X (%.3f of the bound), "
+      "twin %.3f of its bound; %ld differing samples; I/Z ends %ld, %ld clamped to their edge (t up to %.1f unclamped; I up to %.1f "
+      "off the boundary's at yt)\n",
+      what, Fmt::name, st.polygons, st.segments, st.rows, st.samples, st.worst_x, st.worst_x_ratio, st.worst_twin_x,
+      st.differing, st.ends, st.extrapolated, st.max_t, st.worst_i_off_boundary);
   const std::string p = std::string(Fmt::name) + "_" + what;
   ::testing::Test::RecordProperty(p + "_worst_x_lsb", std::to_string(st.worst_x));
   ::testing::Test::RecordProperty(p + "_worst_x_of_bound", std::to_string(st.worst_x_ratio));
@@ -789,9 +796,7 @@ void work_segments(int scale, Digest* dg) {
   }
   EXPECT_GT(st.segments, 2500 * scale);
   for (unsigned type : {kSegTop, kSegBottom, kSegMiddle, kSegWhole}) EXPECT_GT(st.types[type], 100) << "type " << type;
-  if (SegmentChecker<Fmt>::kExact) {
-    EXPECT_EQ(st.differing, 0);
-  }
+  if (SegmentChecker<Fmt>::kExact) { EXPECT_EQ(st.differing, 0); }
   if (!dg) report_segments<Fmt>("random", st);
 }
 

@@ -91,10 +91,12 @@ std::vector<std::string> golden_lines(const GoldenScene& sc) {
   auto segment_line = [&](const Segment<P>& g) {
     std::ostringstream s;
     const int rf = int(g.row_first.value()), rl = int(g.row_last.value());
-    s << "S " << hex(std::int64_t(g.line.value())) << " " << hex(std::int64_t(g.type.value())) << " " << rf << " " << rl;
+    s << "S " << hex(std::int64_t(g.line.value())) << " " << hex(std::int64_t(g.type.value())) << " " << rf << " "
+      << rl;
     for (int r = rf; r <= rl; ++r) s << " " << hex(raw_of(g.xl[r])) << ":" << hex(raw_of(g.xr[r]));
-    s << " " << hex(raw_of(g.il)) << " " << hex(raw_of(g.ir)) << " " << hex(code_of(g.zl)) << " " << hex(code_of(g.zr)) << " "
-      << hex(std::int64_t(g.source.value())) << " " << g.is_light << " " << g.opaque << " " << hex(std::int64_t(g.channel.value()));
+    s << " " << hex(raw_of(g.il)) << " " << hex(raw_of(g.ir)) << " " << hex(code_of(g.zl)) << " " << hex(code_of(g.zr))
+      << " " << hex(std::int64_t(g.source.value())) << " " << g.is_light << " " << g.opaque << " "
+      << hex(std::int64_t(g.channel.value()));
     line(s);
     EXPECT_TRUE(y_sort(g, *rig.mem));
   };
@@ -102,7 +104,8 @@ std::vector<std::string> golden_lines(const GoldenScene& sc) {
     const IntPolygon& p = it.p;
     std::ostringstream in;
     if (it.light) {
-      in << "L " << p.id << " " << p.x[0] << " " << p.y[0] << " " << p.i[0] << " " << hex(p.z[0]) << " " << it.d << " " << rgb(p.colour);
+      in << "L " << p.id << " " << p.x[0] << " " << p.y[0] << " " << p.i[0] << " " << hex(p.z[0]) << " " << it.d << " "
+         << rgb(p.colour);
       line(in);
       FormattedPrimitive f = fixed_input(p);
       f.is_light = true;
@@ -135,9 +138,10 @@ std::vector<std::string> golden_lines(const GoldenScene& sc) {
         std::ostringstream es;
         es << "E " << (side ? 'R' : 'L') << " " << hex(g.row_first) << " " << hex(g.row_last) << " "
            << hex(std::int64_t(g.x_begin.value())) << "," << hex(std::int64_t(g.y_begin.value())) << ","
-           << hex(std::int64_t(g.i_begin.value())) << "," << hex(code_of(g.z_begin)) << " " << hex(std::int64_t(g.x_end.value()))
-           << "," << hex(std::int64_t(g.y_end.value())) << "," << hex(std::int64_t(g.i_end.value())) << "," << hex(code_of(g.z_end))
-           << " " << hex(raw_of(g.dx_per_row)) << " " << hex(raw_of(g.x_first));
+           << hex(std::int64_t(g.i_begin.value())) << "," << hex(code_of(g.z_begin)) << " "
+           << hex(std::int64_t(g.x_end.value())) << "," << hex(std::int64_t(g.y_end.value())) << ","
+           << hex(std::int64_t(g.i_end.value())) << "," << hex(code_of(g.z_end)) << " " << hex(raw_of(g.dx_per_row))
+           << " " << hex(raw_of(g.x_first));
         line(es);
       }
     }
@@ -149,7 +153,8 @@ std::vector<std::string> golden_lines(const GoldenScene& sc) {
     std::ostringstream s;
     s << "R " << l;
     for (int p = 0; p < n; ++p) {
-      const int c[3] = {int(rig.pixels->rgb[p][0].value()), int(rig.pixels->rgb[p][1].value()), int(rig.pixels->rgb[p][2].value())};
+      const int c[3] = {int(rig.pixels->rgb[p][0].value()), int(rig.pixels->rgb[p][1].value()),
+                        int(rig.pixels->rgb[p][2].value())};
       s << " " << rgb(c) << ":" << rig.pixels->id[p];
     }
     line(s);
@@ -198,24 +203,24 @@ GoldenScene golden_scene() {
   };
   // Lights on sample positions (at N = 32 samples lie 32 units apart, X, Y = 32 i + 15; a light
   // covers those within D / 2 <= 3.5 units of its centre).
-  light(2063, 2063, 7, 255);                                          // in front of everything
-  poly({{500, 1290}, {1500, 1300}, {1000, 1400}});                   // one line tall (line 10 at N = 32)
-  poly({{0, 0}, {900, 0}, {0, 700}});                                // clamp-limit corner
-  poly({{4095, 4095}, {3000, 4095}, {4095, 3500}});                  // the opposite corner
-  poly({{1000, 1000}, {1600, 1000}, {1600, 1800}, {1000, 1800}});    // vertical and horizontal edges
-  poly({{2000, 500}, {2600, 900}, {2000, 1500}});                    // a vertical left edge
-  poly({{200, 3000}, {3900, 3100}, {3900, 3104}});                   // a sliver across the screen
-  poly({{2500, 100}, {2503, 3900}, {2501, 3900}});                   // a near-vertical sliver
-  poly({{100, 100}, {200, 200}, {300, 300}});                        // collinear: zero area
-  poly({{1000, 10}, {1010, 10}, {1005, 12}});                        // between two sample rows: dropped
+  light(2063, 2063, 7, 255);                                                   // in front of everything
+  poly({{500, 1290}, {1500, 1300}, {1000, 1400}});                             // one line tall (line 10 at N = 32)
+  poly({{0, 0}, {900, 0}, {0, 700}});                                          // clamp-limit corner
+  poly({{4095, 4095}, {3000, 4095}, {4095, 3500}});                            // the opposite corner
+  poly({{1000, 1000}, {1600, 1000}, {1600, 1800}, {1000, 1800}});              // vertical and horizontal edges
+  poly({{2000, 500}, {2600, 900}, {2000, 1500}});                              // a vertical left edge
+  poly({{200, 3000}, {3900, 3100}, {3900, 3104}});                             // a sliver across the screen
+  poly({{2500, 100}, {2503, 3900}, {2501, 3900}});                             // a near-vertical sliver
+  poly({{100, 100}, {200, 200}, {300, 300}});                                  // collinear: zero area
+  poly({{1000, 10}, {1010, 10}, {1005, 12}});                                  // between two sample rows: dropped
   poly({{600, 2200}, {1000, 2200}, {1000, 2600}, {1000, 3000}, {600, 3000}});  // a vertex mid-edge
-  poly({{2200, 2200}, {3800, 2400}, {3000, 3600}}, false);           // screen door
-  poly({{3000, 200}, {4095, 200}, {4095, 1200}}, true, true);        // protected, right border
-  poly({{1200, 64}, {1400, 64}, {1300, 191}});                       // inside one line, on its rows
-  light(16, 4079, 5, 200);                                           // the corner
+  poly({{2200, 2200}, {3800, 2400}, {3000, 3600}}, false);                     // screen door
+  poly({{3000, 200}, {4095, 200}, {4095, 1200}}, true, true);                  // protected, right border
+  poly({{1200, 64}, {1400, 64}, {1300, 191}});                                 // inside one line, on its rows
+  light(16, 4079, 5, 200);                                                     // the corner
   Rng rng(0x601D);
-  const Shape shapes[] = {Shape::kMedium, Shape::kSmall, Shape::kSliver, Shape::kBorder, Shape::kCollinearVertex,
-                          Shape::kMedium, Shape::kLarge, Shape::kDegenerate};
+  const Shape shapes[] = {Shape::kMedium,          Shape::kSmall,  Shape::kSliver, Shape::kBorder,
+                          Shape::kCollinearVertex, Shape::kMedium, Shape::kLarge,  Shape::kDegenerate};
   for (int k = 0; k < 22; ++k) {
     GoldenItem it;
     it.p = random_polygon(rng, shapes[k % 8], id++);
@@ -223,7 +228,7 @@ GoldenScene golden_scene() {
     if (k == 10) light(1231, 559, 3, 128);
   }
   poly({{0, 0}, {4095, 0}, {4095, 4095}, {0, 4095}});  // the ground
-  light(2991, 2991, 6, 255);                            // behind the ground: hidden
+  light(2991, 2991, 6, 255);                           // behind the ground: hidden
   return sc;
 }
 
@@ -291,7 +296,8 @@ bool parse_scene(const std::vector<std::string>& lines, GoldenScene& sc, std::st
 TEST(SegmentKernels, DISABLED_WriteSegmentGoldenVectors) {
   std::ofstream out(golden_path());
   ASSERT_TRUE(out) << golden_path();
-  out << "# Segment processor golden vectors (SPEC D, seed 001), default format " << SegmentFormatDefault::name << ":\n"
+  out << "# Segment processor golden vectors (SPEC D, seed 001), default format " << SegmentFormatDefault::name
+      << ":\n"
          "# written by SegmentKernels.DISABLED_WriteSegmentGoldenVectors, checked bit for bit by\n"
          "# SegmentKernels.GoldenVectors (verif/kernels/test_segment_kernels_golden.cpp). Inputs in decimal\n"
          "# (colours rrggbb, e8m7 depth codes in hex); outputs in hex (signed: a leading '-').\n"

@@ -130,9 +130,7 @@ void work_y_sorter(int scale, Digest* dg) {
       ASSERT_EQ(got, expect[std::size_t(l)]) << "line " << l;  // arrival order, every field
       ASSERT_EQ(int(m.count[l].value()), int(got.size()));
       ASSERT_EQ(m.head[l] == kNullPointer, got.empty());
-      if (!got.empty()) {
-        ASSERT_EQ(m.tail[l], last);
-      }
+      if (!got.empty()) { ASSERT_EQ(m.tail[l], last); }
       walked[b] += int(got.size());
       if (dg) {
         dg->add(m.count[l].value());
@@ -203,7 +201,8 @@ void work_lights_through_video(int scale, Digest* dg) {
         FormattedPrimitive f;
         f.is_light = true;
         f.n = UInt<5>(1);
-        f.v[0] = {UInt<12>(std::uint64_t(l.x)), UInt<12>(std::uint64_t(l.y)), UInt<8>(std::uint64_t(l.i)), zcode(127 * 128 + k)};
+        f.v[0] = {UInt<12>(std::uint64_t(l.x)), UInt<12>(std::uint64_t(l.y)), UInt<8>(std::uint64_t(l.i)),
+                  zcode(127 * 128 + k)};
         f.d = UInt<3>(std::uint64_t(l.d));
         f.id = UInt<16>(std::uint64_t(k));
         for (int c = 0; c < 3; ++c) t.light_colour[k][c] = UInt<8>(std::uint64_t(40 * k + 50 * c + 1) & 255);
@@ -316,14 +315,15 @@ TEST(VideoChannel, HandBuiltPriorityDoorFogFilterAndIds) {
   VideoRig<P, 256> rig;
   VideoTables<P>& t = *rig.tables;
   const int fog_code = 127 * 128 + 5, fog_f = 64;  // one depth code fogged by 1/4
-  for (int code = 0; code < (1 << 15); ++code) t.fog.f[code] = P::FogFactor::from_raw_value(code == fog_code ? fog_f : 0);
+  for (int code = 0; code < (1 << 15); ++code)
+    t.fog.f[code] = P::FogFactor::from_raw_value(code == fog_code ? fog_f : 0);
   const int fog[3] = {16, 32, 48}, bg[3] = {7, 8, 9};
   for (int c = 0; c < 3; ++c) {
     t.fog_colour[c] = UInt<8>(std::uint64_t(fog[c]));
     t.background[c] = UInt<8>(std::uint64_t(bg[c]));
   }
-  const int colour[11][3] = {{0, 0, 0},    {200, 100, 50}, {102, 30, 250}, {10, 20, 30}, {40, 50, 60},  {200, 100, 254},
-                             {1, 2, 3},    {4, 5, 6},      {7, 8, 9},      {11, 12, 13}, {90, 181, 255}};
+  const int colour[11][3] = {{0, 0, 0}, {200, 100, 50}, {102, 30, 250}, {10, 20, 30}, {40, 50, 60},  {200, 100, 254},
+                             {1, 2, 3}, {4, 5, 6},      {7, 8, 9},      {11, 12, 13}, {90, 181, 255}};
   for (int id = 0; id < 11; ++id)
     for (int c = 0; c < 3; ++c) t.polygon_colour[id][c] = UInt<8>(std::uint64_t(colour[id][c]));
   const int light_colour[3] = {250, 240, 230};
@@ -386,13 +386,15 @@ TEST(VideoChannel, HandBuiltPriorityDoorFogFilterAndIds) {
       const bool door_open = ((i + 4 * 6 + r) & 1) == 0;
       ASSERT_EQ(w.polygon[r][i], door_open ? 3 : 4);
       for (int c = 0; c < 3; ++c)
-        ASSERT_EQ(raw_of(w.rgb[r][i][c]), door_open ? exact_sample(colour[3][c], 255, 0, 0) : exact_sample(colour[4][c], 100, 0, 0));
+        ASSERT_EQ(raw_of(w.rgb[r][i][c]),
+                  door_open ? exact_sample(colour[3][c], 255, 0, 0) : exact_sample(colour[4][c], 100, 0, 0));
     }
   for (int p = 0; p < 16; ++p) {
     EXPECT_EQ(px.id[p], 3);  // 8 and 8: the earlier polygon
     for (int c = 0; c < 3; ++c)
-      EXPECT_EQ(i128(px.rgb[p][c].value()),
-                round_half_up(8 * i128(exact_sample(colour[3][c], 255, 0, 0)) + 8 * i128(exact_sample(colour[4][c], 100, 0, 0)), 4096));
+      EXPECT_EQ(i128(px.rgb[p][c].value()), round_half_up(8 * i128(exact_sample(colour[3][c], 255, 0, 0)) +
+                                                              8 * i128(exact_sample(colour[4][c], 100, 0, 0)),
+                                                          4096));
   }
 
   ASSERT_EQ(render(9), 1);
@@ -404,7 +406,8 @@ TEST(VideoChannel, HandBuiltPriorityDoorFogFilterAndIds) {
   EXPECT_EQ(px.rgb[4][0].value(), 79u);  // 100 * 3/4 + 16 / 4
   EXPECT_EQ(px.rgb[4][1].value(), 46u);  // 50 * 3/4 + 32 / 4 = 45.5, half up
 
-  ASSERT_EQ(render(12), int(std::count_if(segs.begin(), segs.end(), [](const Segment<P>& s) { return s.line.value() == 12; })));
+  ASSERT_EQ(render(12),
+            int(std::count_if(segs.begin(), segs.end(), [](const Segment<P>& s) { return s.line.value() == 12; })));
   EXPECT_EQ(px.id[1], 9);
   EXPECT_EQ(px.id[2], 2);
   EXPECT_EQ(px.id[3], 7);
@@ -416,7 +419,8 @@ TEST(VideoChannel, HandBuiltPriorityDoorFogFilterAndIds) {
       ASSERT_TRUE(w.owned[r][i]);
       for (int c = 0; c < 3; ++c) ASSERT_EQ(raw_of(w.rgb[r][i][c]), exact_sample(light_colour[c], 255, 0, 0));
     }
-  for (int c = 0; c < 3; ++c) EXPECT_EQ(i128(px.rgb[5][c].value()), round_half_up(16 * i128(light_colour[c]) * 255, 4096));
+  for (int c = 0; c < 3; ++c)
+    EXPECT_EQ(i128(px.rgb[5][c].value()), round_half_up(16 * i128(light_colour[c]) * 255, 4096));
   // An empty line: the background.
   ASSERT_EQ(render(0), 0);
   for (int p = 0; p < 16; ++p) {
@@ -452,7 +456,7 @@ RawSegment random_raw_segment(Rng& rng, int line, int sources) {
     s.xl[r] = x0 + drift * (r - s.rf) + between(rng, -one, one);
     // Widths: a few samples, the whole screen, empty or reversed, or below 1/256 unit (the
     // reciprocal saturates).
-    const std::int64_t width = mode == 0 ? between(rng, -4 * one, 0)
+    const std::int64_t width = mode == 0   ? between(rng, -4 * one, 0)
                                : mode == 1 ? between(rng, 1, (one >> 8) + 1)
                                : mode == 2 ? between(rng, 0, 4200 * one)
                                            : between(rng, 0, 300 * one);
@@ -463,7 +467,8 @@ RawSegment random_raw_segment(Rng& rng, int line, int sources) {
   s.ir = s.light ? s.il : below(rng, 4) == 0 ? (below(rng, 2) ? imax : 0) : below(rng, imax + 1);
   const int e = int(between(rng, 120, 134));
   s.zl = e * 128 + int(below(rng, 128));
-  const int de = below(rng, 6) == 0 ? int(between(rng, 13, 16)) : int(between(rng, -1, 1));  // beyond the 12 guard bits too
+  const int de =
+      below(rng, 6) == 0 ? int(between(rng, 13, 16)) : int(between(rng, -1, 1));  // beyond the 12 guard bits too
   s.zr = s.light ? s.zl : std::clamp(e + de, 0, 255) * 128 + int(below(rng, 128));
   return s;
 }
@@ -644,7 +649,8 @@ void work_video_twin(int scale, Digest* dg, VideoStats& st) {
             if (owner < 0) continue;
             const RawSegment& s = segs[std::size_t(owner)];
             for (int c = 0; c < 3; ++c) {
-              const int level = int((s.light ? fx.tables->light_colour : fx.tables->polygon_colour)[s.source][c].value());
+              const int level =
+                  int((s.light ? fx.tables->light_colour : fx.tables->polygon_colour)[s.source][c].value());
               const double b = sample_bound(s, lat, i, level, fog.colour[c], fog);
               const double d = std::abs(value_of(fx.line->rgb[r][i][c]) - tw.line->rgb[r][i][c]);
               ASSERT_LE(d, b) << "row " << row << " col " << i << " colour " << c;
@@ -677,9 +683,10 @@ TEST(VideoChannel, FixedAgainstTwinPerSampleAndPixel) {
   VideoStats st;
   work_video_twin(kScale, nullptr, st);
   EXPECT_GT(st.samples, 20000);
-  std::printf("video channel: %ld samples, worst |fixed - twin| %.4f LSB (%.3f of its bound); %ld of %ld pixel "
-              "values differ, pixel bound up to %.3f LSB\n",
-              st.samples, st.worst_sample, st.worst_sample_ratio, st.pixels_differ, st.pixels * 3, st.worst_pixel_bound);
+  std::printf(
+      "video channel: %ld samples, worst |fixed - twin| %.4f LSB (%.3f of its bound); %ld of %ld pixel "
+      "values differ, pixel bound up to %.3f LSB\n",
+      st.samples, st.worst_sample, st.worst_sample_ratio, st.pixels_differ, st.pixels * 3, st.worst_pixel_bound);
   RecordProperty("worst_sample_lsb", std::to_string(st.worst_sample));
   RecordProperty("worst_sample_of_bound", std::to_string(st.worst_sample_ratio));
   RecordProperty("pixel_values_differing", std::to_string(st.pixels_differ));

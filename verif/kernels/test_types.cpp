@@ -51,9 +51,7 @@ void exhaustive_int_ops() {
       ASSERT_EQ((a == b), x == y);
       ASSERT_EQ(i128(wrap<A>(a + b).value()), wrap_ref(x + y, A));
       ASSERT_EQ(i128(saturate<B>(a * b).value()), sat_ref(x * y, B));
-      if (y != 0) {
-        ASSERT_EQ(i128(div_trunc(a, b).value()), x / y);
-      }
+      if (y != 0) { ASSERT_EQ(i128(div_trunc(a, b).value()), x / y); }
       // Unsigned views of the same bits.
       const i128 ux = ((x % (i128(1) << A)) + (i128(1) << A)) % (i128(1) << A);
       const i128 uy = ((y % (i128(1) << B)) + (i128(1) << B)) % (i128(1) << B);
@@ -178,8 +176,12 @@ void exhaustive_fixed_arith() {
         // a / b = (ra / 2^Fa) / (rb / 2^Fb); raw = ra * 2^(8 + Fb - Fa) / rb
         i128 n = ra, d = rb;
         const int sh = 8 + B::frac_bits - A::frac_bits;
-        if (sh >= 0) n *= i128(1) << sh; else d *= i128(1) << -sh;
-        if (d < 0) { n = -n; d = -d; }
+        if (sh >= 0) n *= i128(1) << sh;
+        else d *= i128(1) << -sh;
+        if (d < 0) {
+          n = -n;
+          d = -d;
+        }
         ASSERT_EQ(i128(q.raw().value()), sat_ref(quantize_ref(n, d, Quant::kRound), 16));
       }
     }

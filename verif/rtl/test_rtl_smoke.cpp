@@ -131,9 +131,24 @@ TEST(RtlPixelLane, RandomInputsMatchTheKernel) {
 TEST(RtlPixelLane, InverseDepthCodeCornerCases) {
   auto ctx = std::make_unique<VerilatedContext>();
   Vqt_pixel_lane m(ctx.get());
-  std::vector<std::int64_t> values = {0, 1, -1, 2, 127, 128, 255, 256, 257, (1ll << 41) - 1, 1ll << 41, (1ll << 41) + 5,
-                                      (1ll << 52) - 1, -(1ll << 41), -(1ll << 41) - 1, -(1ll << 41) - 12345,
-                                      -(1ll << 42) + 3, -(1ll << 52)};
+  std::vector<std::int64_t> values = {0,
+                                      1,
+                                      -1,
+                                      2,
+                                      127,
+                                      128,
+                                      255,
+                                      256,
+                                      257,
+                                      (1ll << 41) - 1,
+                                      1ll << 41,
+                                      (1ll << 41) + 5,
+                                      (1ll << 52) - 1,
+                                      -(1ll << 41),
+                                      -(1ll << 41) - 1,
+                                      -(1ll << 41) - 12345,
+                                      -(1ll << 42) + 3,
+                                      -(1ll << 52)};
   for (int drop = 1; drop <= 33; ++drop)
     for (std::int64_t sig : {128ll, 129ll, 200ll, 201ll, 254ll, 255ll}) {
       const std::int64_t base = sig << drop, half = 1ll << (drop - 1);
@@ -280,8 +295,8 @@ void pe_random_test(int n, int level, int windows, std::uint64_t seed) {
     for (std::size_t i = 0; i < want.size(); ++i) {
       ASSERT_EQ(got[i].child, want[i].child) << "window " << k;
       ASSERT_EQ(got[i].full, want[i].full) << "window " << k << " child " << want[i].child;
-      ASSERT_TRUE(got[i].record == want[i].record)
-          << "window " << k << " child " << want[i].child << ": " << cosim::first_field_difference(L, want[i].record, got[i].record);
+      ASSERT_TRUE(got[i].record == want[i].record) << "window " << k << " child " << want[i].child << ": "
+                                                   << cosim::first_field_difference(L, want[i].record, got[i].record);
       covered += 1;
       full += want[i].full;
     }

@@ -319,9 +319,7 @@ inline void expect_report_self_consistent(const nlohmann::ordered_json& rep, int
   }
   EXPECT_EQ(dropped, num(ov.at("polygons_dropped")));
   // The threshold is the largest that fits: codes 0..T fit (or T = 0), codes 0..T+1 do not.
-  if (t > 0) {
-    EXPECT_TRUE(sum[0] <= kSegmentBankWords && sum[1] <= kSegmentBankWords) << "threshold " << t;
-  }
+  if (t > 0) { EXPECT_TRUE(sum[0] <= kSegmentBankWords && sum[1] <= kSegmentBankWords) << "threshold " << t; }
   if (t + 1 < kAreaCodes) {
     const auto& next = ov.at("per_area_code").at(std::size_t(t + 1));
     EXPECT_TRUE(sum[0] + num(next.at("segments_even")) > kSegmentBankWords ||
@@ -337,9 +335,7 @@ inline void expect_report_self_consistent(const nlohmann::ordered_json& rep, int
   EXPECT_EQ(stored + num(sg.at("dropped_memory_full")), num(sg.at("polygon")) + num(sg.at("light")));
   EXPECT_EQ(num(sg.at("stored_even")), std::min(sum[0], kSegmentBankWords));
   EXPECT_EQ(num(sg.at("stored_odd")), std::min(sum[1], kSegmentBankWords));
-  if (t > 0) {
-    EXPECT_EQ(num(sg.at("dropped_memory_full")), 0);
-  }
+  if (t > 0) { EXPECT_EQ(num(sg.at("dropped_memory_full")), 0); }
   EXPECT_EQ(num(sg.at("read_by_video")), stored);
   EXPECT_DOUBLE_EQ(sg.at("per_line_mean").get<double>(), double(stored) / raster);
   EXPECT_LE(num(sg.at("per_line_max")), stored);
@@ -375,9 +371,7 @@ inline void expect_report_matches(const nlohmann::ordered_json& rep, const Scree
   EXPECT_EQ(num(sg.at("stored_even")), fc.stored[0]);
   EXPECT_EQ(num(sg.at("stored_odd")), fc.stored[1]);
   EXPECT_EQ(num(sg.at("dropped_memory_full")), fc.dropped_memory_full);
-  if (fc.dropped_memory_full == 0) {
-    EXPECT_EQ(num(sg.at("per_line_max")), fc.per_line_max);
-  }
+  if (fc.dropped_memory_full == 0) { EXPECT_EQ(num(sg.at("per_line_max")), fc.per_line_max); }
 }
 
 // ---- Coverage uncertainty of the engine's X --------------------------------------------------------

@@ -251,8 +251,7 @@ ScreenFrame huge_tiny_scene() {
   for (long k = 0; k < 600; ++k) {
     const long x = between(rng, 0, 4092), y = between(rng, 0, 4092);
     std::vector<GridVertex> v;
-    if (k % 3 == 0)
-      v = std::vector<GridVertex>{{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}};
+    if (k % 3 == 0) v = std::vector<GridVertex>{{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}};
     else
       v = std::vector<GridVertex>{
           {x, y}, {x + between(rng, 1, 3), y + between(rng, 0, 3)}, {x + between(rng, 0, 2), y + between(rng, 1, 3)}};

@@ -56,10 +56,10 @@ void expect_rejected(const std::string& text, int n, const std::string& rule) {
 }
 
 TEST(ArchitectureParse, RejectsBrokenRules) {
-  expect_rejected("9p", 10, "cover 9 levels");              // the levels must add up to n
+  expect_rejected("9p", 10, "cover 9 levels");  // the levels must add up to n
   expect_rejected("8p2t", 9, "cover more than the n = 9");
   expect_rejected("11p", 10, "cover more than");
-  expect_rejected("2t8p", 10, "must be the last stage");     // t only last
+  expect_rejected("2t8p", 10, "must be the last stage");  // t only last
   expect_rejected("nt1p", 10, "must be the last stage");
   expect_rejected("5x5p", 10, "unknown stage kind 'x'");
   expect_rejected("5p5", 10, "must be followed by s");

@@ -3,8 +3,8 @@
 #include <random>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "geometry/clip.hpp"
 #include "geometry/geometric_processor.hpp"
@@ -135,8 +135,14 @@ TEST(Clip, SharedEdgeClipsToIdenticalVertices) {
     const glm::dvec3 a(8 * u(rng), 8 * u(rng), 5 + 4 * u(rng)), b(8 * u(rng), 8 * u(rng), 5 + 4 * u(rng));
     const glm::dvec3 c(8 * u(rng), 8 * u(rng), 5 + 4 * u(rng)), d(8 * u(rng), 8 * u(rng), 5 + 4 * u(rng));
     ClipPolygon p, q;
-    p.v[0] = {a, 0.1}; p.v[1] = {b, 0.9}; p.v[2] = {c, 0.5}; p.n = 3;
-    q.v[0] = {b, 0.9}; q.v[1] = {a, 0.1}; q.v[2] = {d, 0.3}; q.n = 3;
+    p.v[0] = {a, 0.1};
+    p.v[1] = {b, 0.9};
+    p.v[2] = {c, 0.5};
+    p.n = 3;
+    q.v[0] = {b, 0.9};
+    q.v[1] = {a, 0.1};
+    q.v[2] = {d, 0.3};
+    q.n = 3;
     if (!clip_polygon(p, pyramid, 0x1f) || !clip_polygon(q, pyramid, 0x1f)) continue;
     // Every clipped vertex of p that lies on segment ab must appear bit-identically in q.
     for (int i = 0; i < p.n; ++i) {

@@ -85,7 +85,8 @@ void compare_random_polygons(int m, double scale, int polygons, unsigned seed, b
       const double a = 2 * M_PI * std::uniform_real_distribution<double>(0, 1)(rng);
       const double d = rad * std::sqrt(std::uniform_real_distribution<double>(0, 1)(rng));
       const double step = (t % 3 == 0) ? 1.0 : 1.0 / scale;
-      pts.push_back({std::round((cx + d * std::cos(a)) / step) * step, std::round((cy + d * std::sin(a)) / step) * step});
+      pts.push_back(
+          {std::round((cx + d * std::cos(a)) / step) * step, std::round((cy + d * std::sin(a)) / step) * step});
     }
     std::vector<P2> h = hull(pts);
     if (h.size() < 3 || int(h.size()) > kMaxScreenVertices) continue;
@@ -98,8 +99,10 @@ void compare_random_polygons(int m, double scale, int polygons, unsigned seed, b
     });
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (const P2& p : h) {
-      x0 = std::min(x0, p.x); x1 = std::max(x1, p.x);
-      y0 = std::min(y0, p.y); y1 = std::max(y1, p.y);
+      x0 = std::min(x0, p.x);
+      x1 = std::max(x1, p.x);
+      y0 = std::min(y0, p.y);
+      y1 = std::max(y1, p.y);
     }
     long expect = 0;
     for (int j = std::max(0, int(y0) - 2); j <= std::min(m - 1, int(y1) + 2); ++j)
@@ -201,7 +204,8 @@ void expect_watertight(int m, int g, bool snapped, bool slivers, unsigned seed) 
   for (std::size_t t = 0; t < tris.size(); ++t) {
     std::vector<P2> tri = tris[t];
     if (t % 2) std::reverse(tri.begin(), tri.end());  // either winding
-    for_each_covered_sample(setup(tri), m, [&](int i, int j) { ++count[std::size_t(j) * std::size_t(m) + std::size_t(i)]; });
+    for_each_covered_sample(setup(tri), m,
+                            [&](int i, int j) { ++count[std::size_t(j) * std::size_t(m) + std::size_t(i)]; });
   }
   long holes = 0, doubles = 0;
   for (auto c : count) {
@@ -241,7 +245,10 @@ TEST(Coverage, ReferenceRenderOfATilingLeavesNoBackground) {
     p.colour = {0.2, 0.5, 0.3};
     for (const P2& q : tri) {
       // Back from sample coordinates to Xs, Ys (the inverse of the lattice map).
-      auto back = [&](double s) { return ((s / (kSamplesPerSide / lattice.units_per_pixel())) - 1 + lattice.units_per_pixel() / 8 - kGridOffset) / kGridScale; };
+      auto back = [&](double s) {
+        return ((s / (kSamplesPerSide / lattice.units_per_pixel())) - 1 + lattice.units_per_pixel() / 8 - kGridOffset) /
+               kGridScale;
+      };
       p.vertices.push_back({back(q.x), back(q.y), 10, 1});
     }
     f.polygons.push_back(p);

@@ -21,7 +21,8 @@ namespace {
 
 std::string scene_with_sun(const std::string& direction) {
   return R"({"format": "cig-scene", "version": 1, "channels": [{"fov": 40}],
-    "lighting": {"sun_direction": )" + direction + R"(},
+    "lighting": {"sun_direction": )" +
+         direction + R"(},
     "observer": {"keyframes": [{"frame": 0, "position": [0, -10, 2]}]},
     "objects": [{"light_points": [{"position": [0, 0, 1], "diameter": 1}]}]})";
 }
@@ -58,7 +59,8 @@ TEST(InputLimits, DenormalObjCoordinateIsATinyNumber) {
 
 // A FIFO would block a reader forever: it is refused from its file type, before any open().
 TEST(InputLimits, FifoAndDevicesAreRefusedWithoutReading) {
-  const std::string fifo = (std::filesystem::temp_directory_path() / ("cig_fifo_" + std::to_string(::getpid()))).string();
+  const std::string fifo =
+      (std::filesystem::temp_directory_path() / ("cig_fifo_" + std::to_string(::getpid()))).string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   try {
     load_obj(fifo);

@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.hpp"
 #include "engine/engine.hpp"
 #include "frame/screen_frame.hpp"
-#include "common/error.hpp"
 #include "image/image_compare.hpp"
 #include "pipeline/scene_pipeline.hpp"
 #include "registry/engine_registry.hpp"
@@ -17,7 +17,8 @@
 namespace cig {
 namespace {
 
-EngineRun run(const ScreenFrame& f, const std::string& engine, std::map<std::string, std::string> params = {}, bool snap = false) {
+EngineRun run(const ScreenFrame& f, const std::string& engine, std::map<std::string, std::string> params = {},
+              bool snap = false) {
   EngineOptions o;
   o.snap = snap;
   o.params = std::move(params);
@@ -87,7 +88,7 @@ TEST(QuadtreeEngine, HiddenPolygonsDieAboveThePixelLevel) {
   const auto& died = on.report["pieces_hidden_by_level"];
   long hidden = 0;
   for (std::size_t l = 0; l < died.size(); ++l) hidden += died[l].get<long>();
-  EXPECT_GT(hidden, long(f.polygons.size()) / 4);  // most of ten layers are hidden
+  EXPECT_GT(hidden, long(f.polygons.size()) / 4);   // most of ten layers are hidden
   EXPECT_EQ(died[died.size() - 1].get<long>(), 0);  // none reaches the pixel level
   EXPECT_EQ(off.report["pieces_hidden_by_masks"].get<long>(), 0);
   const long long cycles_on = on.report["cycles"]["frame"].get<long long>();

@@ -9,9 +9,7 @@
 
 namespace cig::test {
 
-inline std::string source_path(const std::string& relative) {
-  return std::string(CIG_SOURCE_DIR) + "/" + relative;
-}
+inline std::string source_path(const std::string& relative) { return std::string(CIG_SOURCE_DIR) + "/" + relative; }
 
 inline std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
