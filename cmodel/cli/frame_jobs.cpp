@@ -41,7 +41,9 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
   int a, b;
   frame_range(frames_text, frame_k, frame_given, j.scene_->frame_count(), input, a, b);
   if (channel >= int(j.scene_->channels.size()))
-    throw InputError("", "--channel", "channel " + std::to_string(channel) + " does not exist");
+    throw InputError(input, "--channel",
+                     "channel " + std::to_string(channel) + " does not exist (the scene has " +
+                         std::to_string(j.scene_->channels.size()) + ")");
   for (int f = a; f <= b; ++f)
     for (int c = 0; c < int(j.scene_->channels.size()); ++c)
       if (channel < 0 || c == channel) j.jobs_.push_back({f, c});

@@ -22,11 +22,11 @@ void PolysCommand::add_to(CLI::App& app) {
 int PolysCommand::run() {
   const Scene scene = load_scene(scene_file, model_limit.limits());
   if (frame < 0 || frame >= scene.frame_count())
-    throw InputError("", "--frame",
+    throw InputError(scene_file, "--frame",
                      "frame " + std::to_string(frame) + " lies outside the observer path (0.." +
                          std::to_string(scene.frame_count() - 1) + ")");
   if (channel < 0 || channel >= int(scene.channels.size()))
-    throw InputError("", "--channel", "channel " + std::to_string(channel) + " does not exist");
+    throw InputError(scene_file, "--channel", "channel " + std::to_string(channel) + " does not exist");
   check_output_file(out_file, "--out");
   const ScenePipeline pipeline(scene);
   nlohmann::ordered_json rep;

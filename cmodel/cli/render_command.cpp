@@ -36,7 +36,7 @@ std::vector<int> selected_channels(const Scene& scene, int channel) {
   std::vector<int> channels;
   if (channel >= 0) {
     if (channel >= int(scene.channels.size()))
-      throw InputError("", "--channel",
+      throw InputError(scene.file, "--channel",
                        "channel " + std::to_string(channel) + " does not exist (scene has " +
                            std::to_string(scene.channels.size()) + ")");
     channels.push_back(channel);
