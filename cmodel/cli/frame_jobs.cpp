@@ -64,7 +64,13 @@ void FrameJobs::check_capacity(const RasterEngine& engine) const {
     if (!jobs_.empty()) engine.check_raster(scene_->raster);
     return;
   }
-  for (std::size_t k = 0; k < jobs_.size(); ++k) engine.check_frame(screen_frame(k));
+  for (std::size_t k = 0; k < jobs_.size(); ++k) {
+    try {
+      engine.check_frame(screen_frame(k));
+    } catch (const InputError& e) {
+      throw InputError(scene_ ? scene_->file : "", e.where(), e.rule());  // the scene that makes the frame
+    }
+  }
 }
 
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {

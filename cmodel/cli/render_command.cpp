@@ -85,7 +85,11 @@ void check_frames(const Scene& scene, int a, int b, const std::vector<int>& chan
   for (int frame = a; frame <= b; ++frame)
     for (int c : channels) {
       nlohmann::ordered_json unused;
-      checker->check_frame(pipeline.geometry(frame, c, unused));
+      try {
+        checker->check_frame(pipeline.geometry(frame, c, unused));
+      } catch (const InputError& e) {
+        throw InputError(scene.file, e.where(), e.rule());  // the scene that makes the frame
+      }
     }
 }
 
