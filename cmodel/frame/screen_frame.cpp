@@ -91,18 +91,32 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
 
 ScreenFrame load_polygon_list(const std::string& file) { return parse_polygon_list(read_text_file(file), file); }
 
+namespace {
+
+// A double as the polygon list writes it: all 17 digits, and negative zero as "-0.0" (a JSON
+// reader takes "-0" for the integer 0 and would lose the sign, so the text would not round-trip).
+struct Number {
+  double x;
+};
+std::ostream& operator<<(std::ostream& s, Number n) {
+  if (n.x == 0 && std::signbit(n.x)) return s << "-0.0";
+  return s << n.x;
+}
+
+}  // namespace
+
 std::string polygon_list_json(const ScreenFrame& f) {
   // Written by hand rather than through nlohmann::json so that doubles keep all 17 digits and the
   // file round-trips bit for bit.
   std::ostringstream s;
   s << std::setprecision(17);
-  auto rgb = [&](const Rgb& c) { s << "[" << c.r << ", " << c.g << ", " << c.b << "]"; };
+  auto rgb = [&](const Rgb& c) { s << "[" << Number{c.r} << ", " << Number{c.g} << ", " << Number{c.b} << "]"; };
   s << "{\n  \"format\": \"cig-polys\",\n  \"version\": 1,\n  \"raster\": " << f.raster << ",\n  \"frame\": " << f.frame
     << ",\n  \"channel\": " << f.channel << ",\n";
   if (f.fog.end < 1e29) {
     s << "  \"fog\": {\"colour\": ";
     rgb(f.fog.colour);
-    s << ", \"start\": " << f.fog.start << ", \"end\": " << f.fog.end << "},\n";
+    s << ", \"start\": " << Number{f.fog.start} << ", \"end\": " << Number{f.fog.end} << "},\n";
   }
   s << "  \"background\": ";
   rgb(f.background);
@@ -115,17 +129,18 @@ std::string polygon_list_json(const ScreenFrame& f) {
       << ", \"vertices\": [";
     for (std::size_t k = 0; k < p.vertices.size(); ++k) {
       const auto& v = p.vertices[k];
-      s << (k ? ", " : "") << "[" << v.xs << ", " << v.ys << ", " << v.zs << ", " << v.is << "]";
+      s << (k ? ", " : "") << "[" << Number{v.xs} << ", " << Number{v.ys} << ", " << Number{v.zs} << ", "
+        << Number{v.is} << "]";
     }
     s << "]}";
   }
   s << "\n  ],\n  \"light_points\": [";
   for (std::size_t i = 0; i < f.light_points.size(); ++i) {
     const auto& l = f.light_points[i];
-    s << (i ? ",\n" : "\n") << "    {\"centre\": [" << l.xs << ", " << l.ys << ", " << l.zs
-      << "], \"diameter\": " << l.ds << ", \"colour\": ";
+    s << (i ? ",\n" : "\n") << "    {\"centre\": [" << Number{l.xs} << ", " << Number{l.ys} << ", " << Number{l.zs}
+      << "], \"diameter\": " << Number{l.ds} << ", \"colour\": ";
     rgb(l.colour);
-    s << ", \"intensity\": " << l.intensity << ", \"priority\": " << l.priority << "}";
+    s << ", \"intensity\": " << Number{l.intensity} << ", \"priority\": " << l.priority << "}";
   }
   s << "\n  ]\n}\n";
   return s.str();

@@ -95,6 +95,20 @@ TEST(InputLimits, PolygonListAcceptsRepeatedVertices) {
   EXPECT_EQ(polygon_list_json(parse_polygon_list(polygon_list_json(f), "again")), polygon_list_json(f));
 }
 
+// Found by fuzz_polygon_list (30-minute campaign): a light at Xs = -0.0 was written "-0", which a
+// JSON reader takes for the integer 0, so the written list read back with +0. Negative zero is
+// written "-0.0" and keeps its sign.
+TEST(InputLimits, NegativeZeroRoundTrips) {
+  const std::string text = R"({"format": "cig-polys", "version": 1, "raster": 64, "polygons": [],
+    "light_points": [{"centre": [-0.0, 0.1, 100], "diameter": 0.05}]})";
+  const ScreenFrame f = parse_polygon_list(text, "minus_zero.polys.json");
+  ASSERT_TRUE(std::signbit(f.light_points[0].xs));
+  const std::string written = polygon_list_json(f);
+  const ScreenFrame back = parse_polygon_list(written, "written");
+  EXPECT_TRUE(std::signbit(back.light_points[0].xs));
+  EXPECT_EQ(polygon_list_json(back), written);
+}
+
 // compare, sweep and cosim take a scene or a polygon list: the format field decides, so a scene
 // with a channel called "cig-polys" is a scene.
 TEST(InputLimits, InputKindComesFromTheFormatField) {
