@@ -142,7 +142,6 @@ int CompareCommand::run() {
   const EngineOptions ro = reference_options(reference);
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
-  if (jobs.size() > 0) make_engine(engine.engine, eo)->check_raster(jobs.screen_frame(0).raster);
   jobs.check_capacity(*make_engine(engine.engine, eo));
   if (!out_dir.empty()) check_output_dir(out_dir, "--out");
   if (!report_file.empty()) check_output_file(report_file, "--report");

@@ -24,6 +24,7 @@ EngineOptions reference_options(const std::string& reference) {
 FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
                           int channel, const SceneLimits& limits) {
   FrameJobs j;
+  j.input_ = input;
   const std::string text = read_text_file(input);
   if (input_kind(text, input) == InputKind::kPolygonList) {
     // --frame, --frames and --channel choose images of a scene; a polygon list is one image.
@@ -60,16 +61,15 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
 }
 
 void FrameJobs::check_capacity(const RasterEngine& engine) const {
-  if (scene_ && !scene_exceeds_ids(*scene_)) {
-    if (!jobs_.empty()) engine.check_raster(scene_->raster);
-    return;
-  }
-  for (std::size_t k = 0; k < jobs_.size(); ++k) {
-    try {
-      engine.check_frame(screen_frame(k));
-    } catch (const InputError& e) {
-      throw InputError(scene_ ? scene_->file : "", e.where(), e.rule());  // the scene that makes the frame
+  try {
+    if (scene_ && !scene_exceeds_ids(*scene_)) {
+      if (!jobs_.empty()) engine.check_raster(scene_->raster);
+      return;
     }
+    for (std::size_t k = 0; k < jobs_.size(); ++k) engine.check_frame(screen_frame(k));
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(input_, e.where(), e.rule());  // the input that makes the frame
   }
 }
 

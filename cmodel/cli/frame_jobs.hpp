@@ -39,6 +39,7 @@ class FrameJobs {
   void check_capacity(const RasterEngine& engine) const;
 
  private:
+  std::string input_;              // the file, for errors
   std::vector<ScreenFrame> list_;  // polygon-list input
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<ScenePipeline> pipeline_;

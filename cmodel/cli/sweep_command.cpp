@@ -77,7 +77,7 @@ struct SweepRow {
 
 namespace {
 
-// One engine per value of the varied option, each checked against the raster before any work.
+// One engine per value of the varied option (each checked against the frames by run()).
 std::vector<std::unique_ptr<RasterEngine>> make_engines(const SweepCommand& c, const EngineOptions& base,
                                                         const Varied& varied, const FrameJobs& jobs) {
   std::vector<std::unique_ptr<RasterEngine>> engines;
@@ -86,7 +86,6 @@ std::vector<std::unique_ptr<RasterEngine>> make_engines(const SweepCommand& c, c
     o.params[varied.key] = value;
     try {
       engines.push_back(make_engine(c.engine.engine, o));
-      if (jobs.size() > 0) engines.back()->check_raster(jobs.screen_frame(0).raster);
     } catch (const InputError& e) { throw InputError("", "--vary", varied.key + "=" + value + ": " + e.rule()); }
   }
   return engines;
@@ -143,7 +142,13 @@ int SweepCommand::run() {
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied, jobs);
-  for (const auto& e : engines) jobs.check_capacity(*e);
+  for (std::size_t v = 0; v < engines.size(); ++v) {
+    try {
+      jobs.check_capacity(*engines[v]);
+    } catch (const InputError& e) {
+      throw InputError(e.file(), "--vary", varied.key + "=" + varied.values[v] + ": " + e.rule());
+    }
+  }
   if (!report_file.empty()) check_output_file(report_file, "--report");
   const std::vector<SweepRow> rows = measure(jobs, varied, ro, engines, repeat);
 
