@@ -9,8 +9,8 @@
 //     128 and exponent + 1);
 //   exponent < 0 -> code 0; exponent > 255 -> 15'h7FFF; else {exponent[7:0], significand[6:0]}.
 module qt_e8m7_code #(
-  parameter int PW = 53,   // the parameter value's width (signed)
-  parameter int G = 16     // its fractional bits
+  parameter int PW = qt_pkg::PW_DEFAULT,   // the parameter value's width (signed)
+  parameter int G = qt_pkg::G_DEFAULT      // its fractional bits
 ) (
   input  logic [PW-1:0] value_i,        // W = 1/Z in value units, G fractional bits
   input  logic [9:0]    w_exponent_i,   // the polygon's block exponent (signed)

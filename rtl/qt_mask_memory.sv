@@ -12,20 +12,23 @@
 // Storage: one array per level (4^l words) plus a valid bit per word. clear_i (the frame start)
 // clears the valid bits in one cycle; a word whose valid bit is clear reads as 0.
 module qt_mask_memory #(
-  parameter int N_LOG2 = 9,
+  parameter int N_LOG2 = qt_pkg::N_LOG2_DEFAULT,
   parameter int NRD = 1,
-  parameter int NSET = 1
+  parameter int NSET = 1,
+  localparam int LW = qt_pkg::LEVEL_W,
+  localparam int CW = qt_pkg::COORD_W,
+  localparam int SW = qt_pkg::MASK_SET_W
 ) (
-  input  logic              clk_i,
-  input  logic              clear_i,
+  input  logic               clk_i,
+  input  logic               clear_i,
   // Read ports: level (0..N_LOG2-1), address -> the word.
-  input  logic [NRD*4-1:0]  rd_level_i,
-  input  logic [NRD*10-1:0] rd_x_i,
-  input  logic [NRD*10-1:0] rd_y_i,
-  output logic [NRD*4-1:0]  rd_mask_o,
-  // Set ports: {level[3:0], x[9:0], y[9:0], child[1:0]} (child in bits 1:0).
-  input  logic [NSET-1:0]   set_valid_i,
-  input  logic [NSET*26-1:0] set_i
+  input  logic [NRD*LW-1:0]  rd_level_i,
+  input  logic [NRD*CW-1:0]  rd_x_i,
+  input  logic [NRD*CW-1:0]  rd_y_i,
+  output logic [NRD*4-1:0]   rd_mask_o,
+  // Set ports: a qt_pkg::mask_set_t each.
+  input  logic [NSET-1:0]    set_valid_i,
+  input  logic [NSET*SW-1:0] set_i
 );
 
   // ---- Each request's chain up the levels (from the request alone) ------------------------------
@@ -34,7 +37,8 @@ module qt_mask_memory #(
   // would set in it.
   localparam int NK = N_LOG2 * NSET;
   logic [NK-1:0]    reach;
-  logic [NK*10-1:0] ax, ay;
+  logic [NK-1:0]    own_level;   // l is request s's own level
+  logic [NK*CW-1:0] ax, ay;
   logic [NK*2-1:0]  abit;
   // old_word[k]: that word at the start of the cycle (read by level l's block below).
   logic [NK*4-1:0]  old_word;
@@ -43,31 +47,36 @@ module qt_mask_memory #(
   logic [NK-1:0]    act;
   logic [NK*4-1:0]  merged;
 
-  logic [3:0] req_level, up;   // up: levels from the request to l
-  logic [9:0] req_x, req_y;
+  // The request's address as plain vectors: yosys 0.23 builds a variable bit select of a struct
+  // member as a shift of the whole struct (some 5,000 more cells here).
+  qt_pkg::mask_set_t req;
+  logic [CW-1:0] req_x, req_y;
+  logic [LW-1:0] up;   // levels from the request to l
   always_comb begin
     reach = '0;
     ax = '0;
     ay = '0;
     abit = '0;
-    req_level = '0;
+    own_level = '0;
+    req = '0;
     req_x = '0;
     req_y = '0;
     up = '0;
     for (int l = 0; l < N_LOG2; l++) begin
       for (int s = 0; s < NSET; s++) begin
-        req_level = set_i[s*26+22 +: 4];
-        req_x = set_i[s*26+12 +: 10];
-        req_y = set_i[s*26+2 +: 10];
-        up = req_level - 4'(l);
-        reach[l*NSET+s] = set_valid_i[s] && (req_level >= 4'(l));
-        ax[(l*NSET+s)*10 +: 10] = req_x >> up;
-        ay[(l*NSET+s)*10 +: 10] = req_y >> up;
-        if (up == 4'd0) begin
-          abit[(l*NSET+s)*2 +: 2] = set_i[s*26 +: 2];
+        req = set_i[s*SW +: SW];
+        req_x = req.x;
+        req_y = req.y;
+        up = req.level - LW'(l);
+        reach[l*NSET+s] = set_valid_i[s] && (req.level >= LW'(l));
+        own_level[l*NSET+s] = req.level == LW'(l);
+        ax[(l*NSET+s)*CW +: CW] = req_x >> up;
+        ay[(l*NSET+s)*CW +: CW] = req_y >> up;
+        if (up == LW'(0)) begin
+          abit[(l*NSET+s)*2 +: 2] = req.child;
         end else begin
           // The word one level down is child {y[0], x[0]} of this one.
-          abit[(l*NSET+s)*2 +: 2] = {req_y[up - 4'd1], req_x[up - 4'd1]};
+          abit[(l*NSET+s)*2 +: 2] = {req_y[up - LW'(1)], req_x[up - LW'(1)]};
         end
       end
     end
@@ -82,7 +91,7 @@ module qt_mask_memory #(
     for (int l = N_LOG2 - 1; l >= 0; l--) begin
       for (int s = 0; s < NSET; s++) begin
         if (reach[l*NSET+s]) begin
-          if (set_i[s*26+22 +: 4] == 4'(l)) begin
+          if (own_level[l*NSET+s]) begin
             act[l*NSET+s] = 1'b1;   // the request itself
           end else if (l + 1 < N_LOG2) begin
             // The word one level down became full this cycle (and was not already).
@@ -94,8 +103,8 @@ module qt_mask_memory #(
       for (int s = 0; s < NSET; s++) begin
         set_bits = '0;
         for (int t = 0; t < NSET; t++) begin
-          if (act[l*NSET+t] && ax[(l*NSET+t)*10 +: 10] == ax[(l*NSET+s)*10 +: 10] &&
-              ay[(l*NSET+t)*10 +: 10] == ay[(l*NSET+s)*10 +: 10]) begin
+          if (act[l*NSET+t] && ax[(l*NSET+t)*CW +: CW] == ax[(l*NSET+s)*CW +: CW] &&
+              ay[(l*NSET+t)*CW +: CW] == ay[(l*NSET+s)*CW +: CW]) begin
             set_bits = set_bits | (4'b0001 << abit[(l*NSET+t)*2 +: 2]);
           end
         end
@@ -134,12 +143,12 @@ module qt_mask_memory #(
 
       for (genvar s = 0; s < NSET; s++) begin : g_old
         logic [2*l-1:0] idx;
-        assign idx = {ay[(l*NSET+s)*10 +: l], ax[(l*NSET+s)*10 +: l]};
+        assign idx = {ay[(l*NSET+s)*CW +: l], ax[(l*NSET+s)*CW +: l]};
         assign old_word[(l*NSET+s)*4 +: 4] = valid_q[idx] ? words_q[idx] : 4'h0;
       end
       for (genvar r = 0; r < NRD; r++) begin : g_rd
         logic [2*l-1:0] idx;
-        assign idx = {rd_y_i[r*10 +: l], rd_x_i[r*10 +: l]};
+        assign idx = {rd_y_i[r*CW +: l], rd_x_i[r*CW +: l]};
         assign rd_word[(l*NRD+r)*4 +: 4] = valid_q[idx] ? words_q[idx] : 4'h0;
       end
 
@@ -149,7 +158,7 @@ module qt_mask_memory #(
         end else begin
           for (int s = 0; s < NSET; s++) begin
             if (act[l*NSET+s]) begin
-              valid_q[{ay[(l*NSET+s)*10 +: l], ax[(l*NSET+s)*10 +: l]}] <= 1'b1;
+              valid_q[{ay[(l*NSET+s)*CW +: l], ax[(l*NSET+s)*CW +: l]}] <= 1'b1;
             end
           end
         end
@@ -157,7 +166,7 @@ module qt_mask_memory #(
       always_ff @(posedge clk_i) begin
         for (int s = 0; s < NSET; s++) begin
           if (act[l*NSET+s] && !clear_i) begin
-            words_q[{ay[(l*NSET+s)*10 +: l], ax[(l*NSET+s)*10 +: l]}] <= merged[(l*NSET+s)*4 +: 4];
+            words_q[{ay[(l*NSET+s)*CW +: l], ax[(l*NSET+s)*CW +: l]}] <= merged[(l*NSET+s)*4 +: 4];
           end
         end
       end
@@ -169,9 +178,15 @@ module qt_mask_memory #(
   assign unused_rd_addr = ^{rd_x_i, rd_y_i};
 
   for (genvar r = 0; r < NRD; r++) begin : g_rd_port
-    logic [3:0] level;
-    assign level = rd_level_i[r*4 +: 4];
+    logic [LW-1:0] level;
+    assign level = rd_level_i[r*LW +: LW];
     assign rd_mask_o[r*4 +: 4] = (32'(level) < N_LOG2) ? rd_word[(32'(level)*NRD+r)*4 +: 4] : 4'h0;
+  end
+
+  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // The write loops over the set ports are unrolled by Verilator only up to its loop limit.
+  if (NSET < 1 || NSET > qt_pkg::NSET_MAX) begin : g_bad_nset
+    $error("qt_mask_memory: NSET must be 1..64 (one set port per PE and pixel processor)");
   end
 
 endmodule

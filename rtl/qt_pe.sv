@@ -19,53 +19,59 @@
 // set request raised if full and opaque, q leaves todo). When not busy, or freed this cycle, the
 // head of the input FIFO is popped, its mask word read (combinational, the memory as it was at
 // the start of the cycle) and todo = ~mask; a window with all four children masked is dropped.
-`include "qt_records.svh"
-
 module qt_pe #(
-  parameter int N_LOG2 = 9,
+  parameter int N_LOG2 = qt_pkg::N_LOG2_DEFAULT,
   parameter int LEVEL = 1,                 // level of the children, 1..N_LOG2
   parameter bit ROUTE_BY_QUADRANT = 1'b0,  // tree PE: child q goes to output q
-  parameter int NE = 8,
-  parameter int NP = 2,
-  parameter int EW = 32,
-  parameter int AW = 22,
-  parameter int PW = 53,
-  parameter int GW = 38,
-  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
-  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW),
+  parameter int NE = qt_pkg::NE_DEFAULT,
+  parameter int NP = qt_pkg::NP_DEFAULT,
+  parameter int EW = qt_pkg::EW_DEFAULT,
+  parameter int AW = qt_pkg::AW_DEFAULT,
+  parameter int PW = qt_pkg::PW_DEFAULT,
+  parameter int GW = qt_pkg::GW_DEFAULT,
+  localparam int WIN_W = qt_pkg::win_w(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = qt_pkg::pix_w(NE, NP, EW, AW, PW, GW),
+  localparam int LW = qt_pkg::LEVEL_W,
+  localparam int CW = qt_pkg::COORD_W,
   localparam int NOUT = ROUTE_BY_QUADRANT ? 4 : 1
 ) (
-  input  logic             clk_i,
-  input  logic             rst_ni,
-  input  logic             clear_i,        // frame start
+  input  logic              clk_i,
+  input  logic              rst_ni,
+  input  logic              clear_i,        // frame start
   // Input FIFO (pixel-record-wide items; the samples field is 0 above the pixel level).
-  input  logic             in_valid_i,
-  input  logic [PIX_W-1:0] in_data_i,
-  output logic             in_ready_o,
+  input  logic              in_valid_i,
+  input  logic [PIX_W-1:0]  in_data_i,
+  output logic              in_ready_o,
   // Mask read of the input FIFO's head window (level LEVEL - 1).
-  output logic [3:0]       mask_level_o,
-  output logic [9:0]       mask_x_o,
-  output logic [9:0]       mask_y_o,
-  input  logic [3:0]       mask_word_i,
+  output logic [LW-1:0]     mask_level_o,
+  output logic [CW-1:0]     mask_x_o,
+  output logic [CW-1:0]     mask_y_o,
+  input  logic [3:0]        mask_word_i,
   // Output FIFO(s): a child is pushed when out_valid_o[dest] (the FIFO's ready was checked).
-  input  logic [NOUT-1:0]  out_ready_i,
-  output logic [NOUT-1:0]  out_valid_o,
-  output logic [PIX_W-1:0] out_data_o,
-  // Mask set request {level, x, y, child} (child in bits 1:0).
-  output logic             set_valid_o,
-  output logic [25:0]      set_o,
+  input  logic [NOUT-1:0]   out_ready_i,
+  output logic [NOUT-1:0]   out_valid_o,
+  output logic [PIX_W-1:0]  out_data_o,
+  // Mask set request.
+  output logic              set_valid_o,
+  output qt_pkg::mask_set_t set_o,
   // Trace.
-  output logic             load_valid_o,   // popped a window this cycle
-  output logic [3:0]       load_mask_o,    // its mask word
-  output logic             emit_valid_o,   // pushed child emit_child_o
-  output logic [1:0]       emit_child_o,
-  output logic             emit_full_o,
-  output logic             busy_o
+  output logic              load_valid_o,   // popped a window this cycle
+  output logic [3:0]        load_mask_o,    // its mask word
+  output logic              emit_valid_o,   // pushed child emit_child_o
+  output logic [1:0]        emit_child_o,
+  output logic              emit_full_o,
+  output logic              busy_o
 );
 
   localparam int K = N_LOG2 - LEVEL + 2;
   localparam bit PIXEL_LEVEL = LEVEL == N_LOG2;
-  localparam int OFF_POLY = `QT_WIN_POLY_OFFSET(NE, NP, EW, PW);
+  localparam int OFF_LEVEL = qt_pkg::field_lo(qt_pkg::F_LEVEL, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_X = qt_pkg::field_lo(qt_pkg::F_X, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_Y = qt_pkg::field_lo(qt_pkg::F_Y, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_D = qt_pkg::field_lo(qt_pkg::F_D, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_F = qt_pkg::field_lo(qt_pkg::F_F, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_POLY = qt_pkg::field_lo(qt_pkg::F_POLY, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_SAMPLES = qt_pkg::field_lo(qt_pkg::F_SAMPLES, NE, NP, EW, AW, PW, GW);
   localparam int POLY_W = WIN_W - OFF_POLY;
   localparam logic [15:0] SCREEN_DOOR = 16'hA5A5;  // (di + dj) even: hls kScreenDoorSamples
 
@@ -75,18 +81,18 @@ module qt_pe #(
   logic [WIN_W-1:0] win_q;
 
   // ---- The held window's fields -----------------------------------------------------------------
-  logic [3:0]        win_level;
-  logic [9:0]        win_x, win_y;
-  logic [NE*EW-1:0]  win_d;
-  logic [NP*PW-1:0]  win_f;
-  logic [POLY_W-1:0] win_poly;
-  logic [15:0]       win_id;
-  logic              win_opaque;
-  logic [23:0]       win_colour;
-  logic [3:0]        win_edge_count;
-  logic [NE*AW-1:0]  win_a, win_b;
-  logic [NP*GW-1:0]  win_dp_di, win_dp_dj;
-  logic [9:0]        win_w_exponent;
+  logic [LW-1:0]                   win_level;
+  logic [CW-1:0]                   win_x, win_y;
+  logic [NE*EW-1:0]                win_d;
+  logic [NP*PW-1:0]                win_f;
+  logic [POLY_W-1:0]               win_poly;
+  logic [qt_pkg::ID_W-1:0]         win_id;
+  logic                            win_opaque;
+  logic [qt_pkg::COLOUR_BITS-1:0]  win_colour;
+  logic [qt_pkg::EDGE_COUNT_W-1:0] win_edge_count;
+  logic [NE*AW-1:0]                win_a, win_b;
+  logic [NP*GW-1:0]                win_dp_di, win_dp_dj;
+  logic [qt_pkg::W_EXPONENT_W-1:0] win_w_exponent;
 
   qt_window_fields #(
     .NE(NE), .NP(NP), .EW(EW), .AW(AW), .PW(PW), .GW(GW)
@@ -229,9 +235,18 @@ module qt_pe #(
     end
   end
 
-  // The child record: the polygon's constants unchanged, new f, d, address and level.
-  assign out_data_o = {samples, win_poly, child_f, child_d, {win_y[8:0], yb}, {win_x[8:0], xb},
-                       4'(LEVEL)};
+  // The child record: the window's fields with a new level, address, d and f (the polygon's
+  // constants unchanged), and its samples.
+  always_comb begin
+    out_data_o = '0;
+    out_data_o[OFF_LEVEL +: LW] = LW'(LEVEL);
+    out_data_o[OFF_X +: CW] = {win_x[CW-2:0], xb};
+    out_data_o[OFF_Y +: CW] = {win_y[CW-2:0], yb};
+    out_data_o[OFF_D +: NE*EW] = child_d;
+    out_data_o[OFF_F +: NP*PW] = child_f;
+    out_data_o[OFF_POLY +: POLY_W] = win_poly;
+    out_data_o[OFF_SAMPLES +: qt_pkg::SAMPLES_W] = samples;
+  end
 
   // ---- Control ----------------------------------------------------------------------------------
   logic dest_ready, stall, done, pop;
@@ -287,12 +302,15 @@ module qt_pe #(
   end
 
   // ---- Mask interface and trace -----------------------------------------------------------------
-  assign mask_level_o = 4'(LEVEL - 1);
-  assign mask_x_o = in_data_i[13:4];    // the head record's x and y (qt_window_fields)
-  assign mask_y_o = in_data_i[23:14];
+  assign mask_level_o = LW'(LEVEL - 1);
+  assign mask_x_o = in_data_i[OFF_X +: CW];    // the head record's x and y
+  assign mask_y_o = in_data_i[OFF_Y +: CW];
 
   assign set_valid_o = done && full && win_opaque;
-  assign set_o = {4'(LEVEL - 1), win_x, win_y, child_sel};
+  assign set_o.level = LW'(LEVEL - 1);
+  assign set_o.x = win_x;
+  assign set_o.y = win_y;
+  assign set_o.child = child_sel;
 
   assign load_valid_o = pop;
   assign load_mask_o = mask_word_i;
@@ -305,6 +323,14 @@ module qt_pe #(
   // identity, colour, edge count and W exponent (carried in win_poly), the input's samples (0).
   logic unused_fields;
   assign unused_fields = ^{win_level, win_id, win_colour, win_edge_count, win_w_exponent,
-                           in_data_i[PIX_W-1:WIN_W]};
+                           in_data_i[OFF_SAMPLES +: qt_pkg::SAMPLES_W]};
+
+  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  if (N_LOG2 < qt_pkg::N_LOG2_MIN || N_LOG2 > qt_pkg::N_LOG2_MAX) begin : g_bad_n_log2
+    $error("qt_pe: N_LOG2 must be 4..10");
+  end
+  if (LEVEL < 1 || LEVEL > N_LOG2) begin : g_bad_level
+    $error("qt_pe: LEVEL must be 1..N_LOG2");
+  end
 
 endmodule

@@ -12,9 +12,9 @@
 // The sample's position is an input (tied to a constant per lane) rather than a parameter, so that
 // the 16 lanes are one module (one synthesis, one row of the synthesis report).
 module qt_pixel_lane #(
-  parameter int PW = 53,
-  parameter int GW = 38,
-  parameter int G = 16
+  parameter int PW = qt_pkg::PW_DEFAULT,
+  parameter int GW = qt_pkg::GW_DEFAULT,
+  parameter int G = qt_pkg::G_DEFAULT
 ) (
   input  logic [3:0]    sample_i,          // 4 dj + di
   input  logic [PW-1:0] f_intensity_i,     // f[0] at the pixel's top-left sample
@@ -97,6 +97,11 @@ module qt_pixel_lane #(
         colour_o[c*16 +: 16] = rounded[15:0];
       end
     end
+  end
+
+  // ---- Limits (rtl/README.md "Parameters"): the intensity clamp reads v[PW-2:IW] ----------------
+  if (PW < G + qt_pkg::PARAM_INT_BITS_MIN) begin : g_bad_pw
+    $error("qt_pixel_lane: PW must be at least G + 10");
   end
 
 endmodule

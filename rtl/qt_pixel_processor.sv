@@ -22,49 +22,50 @@
 //
 // The fog table has 2^FOG_CODE_BITS entries addressed by the top FOG_CODE_BITS bits of the code:
 // 15 (the default) is the kernel's table; fewer only shrink the synthesis configuration.
-`include "qt_records.svh"
-
 module qt_pixel_processor #(
-  parameter int N_LOG2 = 9,
+  parameter int N_LOG2 = qt_pkg::N_LOG2_DEFAULT,
   parameter int TREE_LEVELS = 1,
-  parameter int NE = 8,
-  parameter int NP = 2,
-  parameter int EW = 32,
-  parameter int AW = 22,
-  parameter int PW = 53,
-  parameter int GW = 38,
-  parameter int G = 16,
-  parameter int LIGHT_COVERS = 4096,
-  parameter int FOG_CODE_BITS = 15,
-  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
-  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW)
+  parameter int NE = qt_pkg::NE_DEFAULT,
+  parameter int NP = qt_pkg::NP_DEFAULT,
+  parameter int EW = qt_pkg::EW_DEFAULT,
+  parameter int AW = qt_pkg::AW_DEFAULT,
+  parameter int PW = qt_pkg::PW_DEFAULT,
+  parameter int GW = qt_pkg::GW_DEFAULT,
+  parameter int G = qt_pkg::G_DEFAULT,
+  parameter int LIGHT_COVERS = qt_pkg::LIGHT_COVERS_DEFAULT,
+  parameter int FOG_CODE_BITS = qt_pkg::FOG_CODE_W,
+  localparam int WIN_W = qt_pkg::win_w(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = qt_pkg::pix_w(NE, NP, EW, AW, PW, GW),
+  localparam int LVW = qt_pkg::LEVEL_W,
+  localparam int CW = qt_pkg::COORD_W,
+  localparam int LIW = qt_pkg::LIGHT_INDEX_W
 ) (
-  input  logic              clk_i,
-  input  logic              clear_i,          // frame start
+  input  logic                            clk_i,
+  input  logic                            clear_i,          // frame start
   // The unit's number (a constant; a port rather than a parameter so that every unit is one
   // module: one synthesis, one row of the report).
-  input  logic [2*TREE_LEVELS-1:0] unit_i,
+  input  logic [2*TREE_LEVELS-1:0]        unit_i,
   // Input FIFO.
-  input  logic              in_valid_i,
-  input  logic [PIX_W-1:0]  in_data_i,
-  output logic              in_ready_o,
-  input  logic              stall_i,          // verification back-pressure: take nothing
+  input  logic                            in_valid_i,
+  input  logic [PIX_W-1:0]                in_data_i,
+  output logic                            in_ready_o,
+  input  logic                            stall_i,          // verification back-pressure: take nothing
   // Configuration.
-  input  logic              cfg_valid_i,
-  input  logic [2:0]        cfg_target_i,
-  input  logic [31:0]       cfg_addr_i,
-  input  logic [64:0]       cfg_data_i,
-  // Mask set request {level, x, y, child}.
-  output logic              set_valid_o,
-  output logic [25:0]       set_o,
+  input  logic                            cfg_valid_i,
+  input  logic [qt_pkg::CFG_TARGET_W-1:0] cfg_target_i,
+  input  logic [qt_pkg::CFG_ADDR_W-1:0]   cfg_addr_i,
+  input  logic [qt_pkg::CFG_DATA_W-1:0]   cfg_data_i,
+  // Mask set request.
+  output logic                            set_valid_o,
+  output qt_pkg::mask_set_t               set_o,
   // Trace: took a record, the samples it took, the pixel became full.
-  output logic              px_valid_o,
-  output logic [15:0]       px_fresh_o,
-  output logic              px_full_o,
+  output logic                            px_valid_o,
+  output logic [15:0]                     px_fresh_o,
+  output logic                            px_full_o,
   // Read-out of a resolved pixel this unit owns: {B, G, R}, R in bits 7:0.
-  input  logic [N_LOG2-1:0] rd_x_i,
-  input  logic [N_LOG2-1:0] rd_y_i,
-  output logic [23:0]       rd_rgb_o
+  input  logic [N_LOG2-1:0]               rd_x_i,
+  input  logic [N_LOG2-1:0]               rd_y_i,
+  output logic [23:0]                     rd_rgb_o
 );
 
   localparam int LW = N_LOG2 - TREE_LEVELS + 1;   // local address bits per axis
@@ -75,11 +76,11 @@ module qt_pixel_processor #(
   localparam int FOG_ENTRIES = 1 << FOG_CODE_BITS;
 
   // ---- Tables -------------------------------------------------------------------------------------
-  logic [8:0]   fog_q [FOG_ENTRIES];
-  logic [23:0]  fog_colour_q, background_q;
-  logic [12:0]  light_q [PIXELS];
-  logic [15:0]  cover_mask_q [LIGHT_COVERS];
-  logic [64:0]  cover_sample_q [LIGHT_COVERS * 16];
+  logic [8:0]     fog_q [FOG_ENTRIES];
+  logic [23:0]    fog_colour_q, background_q;
+  logic [LIW-1:0] light_q [PIXELS];
+  logic [15:0]    cover_mask_q [LIGHT_COVERS];
+  logic [64:0]    cover_sample_q [LIGHT_COVERS * 16];
 
   // ---- Pixel state ----------------------------------------------------------------------------------
   logic [15:0]  owned_q [PIXELS];
@@ -103,19 +104,22 @@ module qt_pixel_processor #(
   endfunction
 
   // ---- The record ---------------------------------------------------------------------------------
-  logic [3:0]        rec_level;
-  logic [9:0]        rec_x, rec_y;
-  logic [NE*EW-1:0]  rec_d;
-  logic [NP*PW-1:0]  rec_f;
-  logic [WIN_W-24-NE*EW-NP*PW-1:0] rec_poly;
-  logic [15:0]       rec_id;
-  logic              rec_opaque;
-  logic [23:0]       rec_colour;
-  logic [3:0]        rec_edge_count;
-  logic [NE*AW-1:0]  rec_a, rec_b;
-  logic [NP*GW-1:0]  rec_dp_di, rec_dp_dj;
-  logic [9:0]        rec_w_exponent;
-  logic [15:0]       rec_samples;
+  localparam int OFF_POLY = qt_pkg::field_lo(qt_pkg::F_POLY, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_SAMPLES = qt_pkg::field_lo(qt_pkg::F_SAMPLES, NE, NP, EW, AW, PW, GW);
+
+  logic [LVW-1:0]                  rec_level;
+  logic [CW-1:0]                   rec_x, rec_y;
+  logic [NE*EW-1:0]                rec_d;
+  logic [NP*PW-1:0]                rec_f;
+  logic [WIN_W-OFF_POLY-1:0]       rec_poly;
+  logic [qt_pkg::ID_W-1:0]         rec_id;
+  logic                            rec_opaque;
+  logic [qt_pkg::COLOUR_BITS-1:0]  rec_colour;
+  logic [qt_pkg::EDGE_COUNT_W-1:0] rec_edge_count;
+  logic [NE*AW-1:0]                rec_a, rec_b;
+  logic [NP*GW-1:0]                rec_dp_di, rec_dp_dj;
+  logic [qt_pkg::W_EXPONENT_W-1:0] rec_w_exponent;
+  logic [qt_pkg::SAMPLES_W-1:0]    rec_samples;
 
   qt_window_fields #(
     .NE(NE), .NP(NP), .EW(EW), .AW(AW), .PW(PW), .GW(GW)
@@ -137,7 +141,7 @@ module qt_pixel_processor #(
     .dp_dj_o      (rec_dp_dj),
     .w_exponent_o (rec_w_exponent)
   );
-  assign rec_samples = in_data_i[WIN_W +: 16];
+  assign rec_samples = in_data_i[OFF_SAMPLES +: qt_pkg::SAMPLES_W];
 
   logic             take;
   logic [PXW-1:0]   px;
@@ -156,13 +160,13 @@ module qt_pixel_processor #(
 
   // ---- The pixel's light cover --------------------------------------------------------------------
   // Entry light - 1 of the cover table, or none (index 0, or beyond the table).
-  logic [12:0]     rec_light;
-  logic            rec_has_cover;
-  logic [CVW-1:0]  rec_entry;
-  logic [15:0]     rec_cover_mask;
+  logic [LIW-1:0] rec_light;
+  logic           rec_has_cover;
+  logic [CVW-1:0] rec_entry;
+  logic [15:0]    rec_cover_mask;
   assign rec_light = light_q[px];
-  assign rec_has_cover = rec_light != 13'd0 && 32'(rec_light) <= LIGHT_COVERS;
-  assign rec_entry = CVW'(rec_light - 13'd1);
+  assign rec_has_cover = rec_light != LIW'(0) && 32'(rec_light) <= LIGHT_COVERS;
+  assign rec_entry = CVW'(rec_light - LIW'(1));
   assign rec_cover_mask = rec_has_cover ? cover_mask_q[rec_entry] : 16'h0000;
 
   // ---- 16 sample lanes ----------------------------------------------------------------------------
@@ -231,7 +235,10 @@ module qt_pixel_processor #(
   end
 
   assign set_valid_o = take && became_full;
-  assign set_o = {4'(N_LOG2 - 1), 1'b0, rec_x[9:1], 1'b0, rec_y[9:1], rec_y[0], rec_x[0]};
+  assign set_o.level = LVW'(N_LOG2 - 1);
+  assign set_o.x = {1'b0, rec_x[CW-1:1]};
+  assign set_o.y = {1'b0, rec_y[CW-1:1]};
+  assign set_o.child = {rec_y[0], rec_x[0]};
   assign px_valid_o = take;
   assign px_fresh_o = take ? fresh : 16'h0000;
   assign px_full_o = take && became_full;
@@ -258,7 +265,7 @@ module qt_pixel_processor #(
         end
         3'd2: begin
           if (owner_unit(cfg_x, cfg_y) == 32'(unit_i) && cfg_addr_i < (32'd1 << (2 * N_LOG2))) begin
-            light_q[local_index(cfg_x, cfg_y)] <= cfg_data_i[12:0];
+            light_q[local_index(cfg_x, cfg_y)] <= cfg_data_i[LIW-1:0];
           end
         end
         3'd3: begin
@@ -277,21 +284,21 @@ module qt_pixel_processor #(
   end
 
   // ---- Read-out: the resolved pixel (quad_pixel_resolve, resolve_box) ------------------------------
-  logic [PXW-1:0]  rd_px;
-  logic [15:0]     rd_owned;
-  logic [59:0]     rd_sum;
-  logic [12:0]     rd_light;
-  logic            rd_has_cover;
-  logic [CVW-1:0]  rd_entry;
-  logic [15:0]     rd_cover_mask;
-  logic [59:0]     rd_total;
+  logic [PXW-1:0] rd_px;
+  logic [15:0]    rd_owned;
+  logic [59:0]    rd_sum;
+  logic [LIW-1:0] rd_light;
+  logic           rd_has_cover;
+  logic [CVW-1:0] rd_entry;
+  logic [15:0]    rd_cover_mask;
+  logic [59:0]    rd_total;
 
   assign rd_px = local_index(rd_x_i, rd_y_i);
   assign rd_owned = valid_q[rd_px] ? owned_q[rd_px] : 16'h0000;
   assign rd_sum = valid_q[rd_px] ? sum_q[rd_px] : 60'd0;
   assign rd_light = light_q[rd_px];
-  assign rd_has_cover = rd_light != 13'd0 && 32'(rd_light) <= LIGHT_COVERS;
-  assign rd_entry = CVW'(rd_light - 13'd1);
+  assign rd_has_cover = rd_light != LIW'(0) && 32'(rd_light) <= LIGHT_COVERS;
+  assign rd_entry = CVW'(rd_light - LIW'(1));
   assign rd_cover_mask = rd_has_cover ? cover_mask_q[rd_entry] : 16'h0000;
 
   // Samples no polygon owns show their light, or the background.
@@ -322,5 +329,17 @@ module qt_pixel_processor #(
   logic unused_fields;
   assign unused_fields = ^{rec_level, rec_d, rec_poly, rec_opaque, rec_edge_count, rec_a, rec_b,
                            rec_x, rec_y, cfg_addr_i, cfg_data_i};
+
+  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // The lanes read parameter 0 as I and 1 as W; the light index holds a cover entry + 1.
+  if (NP != 2) begin : g_bad_np
+    $error("qt_pixel_processor: NP must be 2 (I and W)");
+  end
+  if (LIGHT_COVERS < 1 || LIGHT_COVERS > qt_pkg::LIGHT_COVERS_MAX) begin : g_bad_light_covers
+    $error("qt_pixel_processor: LIGHT_COVERS must be 1..8191 (13-bit light index)");
+  end
+  if (FOG_CODE_BITS < 1 || FOG_CODE_BITS > qt_pkg::FOG_CODE_W) begin : g_bad_fog_code_bits
+    $error("qt_pixel_processor: FOG_CODE_BITS must be 1..15");
+  end
 
 endmodule

@@ -11,61 +11,63 @@
 // the cycle, and the mask memory writes the cycle's set requests and their closure at the edge.
 // PE numbering (= the model's): pipeline PEs 0..PIPE_LEVELS-1 (level 1 first), then the tree by
 // depth; leaf PE m feeds pixel processor m.
-`include "qt_records.svh"
-
 module qt_raster #(
-  parameter int N_LOG2 = 9,
+  parameter int N_LOG2 = qt_pkg::N_LOG2_DEFAULT,
   parameter int TREE_LEVELS = 1,
-  parameter int FIFO_DEPTH = 2,
-  parameter int NE = 8,
-  parameter int NP = 2,
-  parameter int EW = 32,
-  parameter int AW = 22,
-  parameter int PW = 53,
-  parameter int GW = 38,
-  parameter int G = 16,
-  parameter int LIGHT_COVERS = 4096,
-  parameter int FOG_CODE_BITS = 15,   // synthesis only: < 15 shrinks the fog table (not the kernel's)
-  localparam int WIN_W = `QT_WIN_W(NE, NP, EW, AW, PW, GW),
-  localparam int PIX_W = `QT_PIX_W(NE, NP, EW, AW, PW, GW),
-  localparam int PIPE_LEVELS = N_LOG2 - TREE_LEVELS,
-  localparam int NPE = PIPE_LEVELS + ((1 << (2 * TREE_LEVELS)) - 1) / 3,
-  localparam int NPIX = 1 << (2 * (TREE_LEVELS - 1)),
-  localparam int NSLOT = NPE + NPIX
+  parameter int FIFO_DEPTH = qt_pkg::FIFO_DEPTH_DEFAULT,
+  parameter int NE = qt_pkg::NE_DEFAULT,
+  parameter int NP = qt_pkg::NP_DEFAULT,
+  parameter int EW = qt_pkg::EW_DEFAULT,
+  parameter int AW = qt_pkg::AW_DEFAULT,
+  parameter int PW = qt_pkg::PW_DEFAULT,
+  parameter int GW = qt_pkg::GW_DEFAULT,
+  parameter int G = qt_pkg::G_DEFAULT,
+  parameter int LIGHT_COVERS = qt_pkg::LIGHT_COVERS_DEFAULT,
+  // Synthesis only: < 15 shrinks the fog table (not the kernel's).
+  parameter int FOG_CODE_BITS = qt_pkg::FOG_CODE_W,
+  localparam int WIN_W = qt_pkg::win_w(NE, NP, EW, AW, PW, GW),
+  localparam int PIX_W = qt_pkg::pix_w(NE, NP, EW, AW, PW, GW),
+  localparam int PIPE_LEVELS = qt_pkg::pipe_levels(N_LOG2, TREE_LEVELS),
+  localparam int NPE = qt_pkg::npe(N_LOG2, TREE_LEVELS),
+  localparam int NPIX = qt_pkg::npix(TREE_LEVELS),
+  localparam int NSLOT = qt_pkg::nslot(N_LOG2, TREE_LEVELS),
+  localparam int LW = qt_pkg::LEVEL_W,
+  localparam int CW = qt_pkg::COORD_W,
+  localparam int SW = qt_pkg::MASK_SET_W
 ) (
-  input  logic                  clk_i,
-  input  logic                  rst_ni,
-  input  logic                  frame_start_i,
+  input  logic                            clk_i,
+  input  logic                            rst_ni,
+  input  logic                            frame_start_i,
   // Input: the level-0 windows of the polygon pieces, in priority order.
-  input  logic                  poly_valid_i,
-  input  logic [WIN_W-1:0]      poly_i,
-  output logic                  poly_ready_o,
+  input  logic                            poly_valid_i,
+  input  logic [WIN_W-1:0]                poly_i,
+  output logic                            poly_ready_o,
   // Verification back-pressure: pixel processor u takes nothing this cycle.
-  input  logic [NPIX-1:0]       pixel_stall_i,
+  input  logic [NPIX-1:0]                 pixel_stall_i,
   // Configuration (tables), one write per cycle.
-  input  logic                  cfg_valid_i,
-  input  logic [2:0]            cfg_target_i,
-  input  logic [31:0]           cfg_addr_i,
-  input  logic [64:0]           cfg_data_i,
+  input  logic                            cfg_valid_i,
+  input  logic [qt_pkg::CFG_TARGET_W-1:0] cfg_target_i,
+  input  logic [qt_pkg::CFG_ADDR_W-1:0]   cfg_addr_i,
+  input  logic [qt_pkg::CFG_DATA_W-1:0]   cfg_data_i,
   // Some FIFO holds a record or some PE holds a window (registers only).
-  output logic                  busy_o,
+  output logic                            busy_o,
   // Trace, per cycle.
-  output logic [NPE-1:0]        pe_load_valid_o,
-  output logic [4*NPE-1:0]      pe_load_mask_o,
-  output logic [NPE-1:0]        pe_emit_valid_o,
-  output logic [2*NPE-1:0]      pe_emit_child_o,
-  output logic [NPE-1:0]        pe_emit_full_o,
-  output logic [NPE*PIX_W-1:0]  pe_emit_data_o,
-  output logic [NPIX-1:0]       px_valid_o,
-  output logic [NPIX*PIX_W-1:0] px_data_o,
-  output logic [16*NPIX-1:0]    px_fresh_o,
-  output logic [NPIX-1:0]       px_full_o,
-  output logic [NSLOT-1:0]      mask_set_valid_o,
-  output logic [NSLOT*26-1:0]   mask_set_o,
+  output logic [NPE-1:0]                  pe_load_valid_o,
+  output logic [4*NPE-1:0]                pe_load_mask_o,
+  output logic [NPE-1:0]                  pe_emit_valid_o,
+  output logic [2*NPE-1:0]                pe_emit_child_o,
+  output logic [NPE-1:0]                  pe_emit_full_o,
+  output logic [NPE*PIX_W-1:0]            pe_emit_data_o,
+  output logic [NPIX-1:0]                 px_valid_o,
+  output logic [NPIX*PIX_W-1:0]           px_data_o,
+  output logic [16*NPIX-1:0]              px_fresh_o,
+  output logic [NPIX-1:0]                 px_full_o,
+  output logic [NSLOT-1:0]                mask_set_valid_o,
+  output logic [NSLOT*SW-1:0]             mask_set_o,   // qt_pkg::mask_set_t per slot
   // Read-out of a resolved pixel: {B, G, R}, R in bits 7:0.
-  input  logic [N_LOG2-1:0]     rd_x_i,
-  input  logic [N_LOG2-1:0]     rd_y_i,
-  output logic [23:0]           rd_rgb_o
+  input  logic [N_LOG2-1:0]               rd_x_i,
+  input  logic [N_LOG2-1:0]               rd_y_i,
+  output logic [23:0]                     rd_rgb_o
 );
 
   localparam int NFIFO = NPE + NPIX;
@@ -92,24 +94,25 @@ module qt_raster #(
     );
   end
 
-  // The input port writes FIFO 0 (a window: samples 0).
+  // The input port writes FIFO 0 (a window: samples 0, the pixel record's last field).
   assign fifo_wvalid[0] = poly_valid_i;
-  assign fifo_wdata[0 +: PIX_W] = {16'h0000, poly_i};
+  assign fifo_wdata[0 +: PIX_W] = PIX_W'(poly_i);
   assign poly_ready_o = fifo_wready[0];
 
   // ---- PEs ----------------------------------------------------------------------------------------
   logic [NPE-1:0]       pe_busy;
-  logic [NPE*4-1:0]     rd_level, rd_mask;
-  logic [NPE*10-1:0]    rd_x, rd_y;
+  logic [NPE*LW-1:0]    rd_level;
+  logic [NPE*4-1:0]     rd_mask;
+  logic [NPE*CW-1:0]    rd_x, rd_y;
   logic [NSLOT-1:0]     set_valid;
-  logic [NSLOT*26-1:0]  set;
+  logic [NSLOT*SW-1:0]  set;
 
   for (genvar p = 0; p < NPE; p++) begin : g_pe
     // Where PE p sits: pipeline stage p, or tree depth `depth`, position `m` in it.
     localparam bit IN_TREE = p >= PIPE_LEVELS;
     localparam int TP = p - PIPE_LEVELS;   // index within the tree
     localparam int DEPTH = !IN_TREE ? 0 : TP < 1 ? 0 : TP < 5 ? 1 : TP < 21 ? 2 : TP < 85 ? 3 : 4;
-    localparam int M = TP - ((1 << (2 * DEPTH)) - 1) / 3;
+    localparam int M = TP - qt_pkg::tree_pes(DEPTH);
     localparam int LEVEL = IN_TREE ? PIPE_LEVELS + 1 + DEPTH : p + 1;
     localparam bit LEAF = IN_TREE && DEPTH == TREE_LEVELS - 1;
     localparam bit ROUTE = IN_TREE && !LEAF;
@@ -117,7 +120,7 @@ module qt_raster #(
     // The first FIFO PE p writes: the next stage's, child PE 4 m of the next depth's, or the pixel
     // processor's.
     localparam int DEST = !IN_TREE ? p + 1 :
-                          LEAF ? NPE + M : PIPE_LEVELS + ((1 << (2 * (DEPTH + 1))) - 1) / 3 + 4 * M;
+                          LEAF ? NPE + M : PIPE_LEVELS + qt_pkg::tree_pes(DEPTH + 1) + 4 * M;
 
     logic [NOUT-1:0]  out_valid;
     logic [PIX_W-1:0] out_data;
@@ -134,15 +137,15 @@ module qt_raster #(
       .in_valid_i   (fifo_rvalid[p]),
       .in_data_i    (fifo_rdata[p*PIX_W +: PIX_W]),
       .in_ready_o   (fifo_rready[p]),
-      .mask_level_o (rd_level[p*4 +: 4]),
-      .mask_x_o     (rd_x[p*10 +: 10]),
-      .mask_y_o     (rd_y[p*10 +: 10]),
+      .mask_level_o (rd_level[p*LW +: LW]),
+      .mask_x_o     (rd_x[p*CW +: CW]),
+      .mask_y_o     (rd_y[p*CW +: CW]),
       .mask_word_i  (rd_mask[p*4 +: 4]),
       .out_ready_i  (fifo_wready[DEST +: NOUT]),
       .out_valid_o  (out_valid),
       .out_data_o   (out_data),
       .set_valid_o  (set_valid[p]),
-      .set_o        (set[p*26 +: 26]),
+      .set_o        (set[p*SW +: SW]),
       .load_valid_o (pe_load_valid_o[p]),
       .load_mask_o  (pe_load_mask_o[p*4 +: 4]),
       .emit_valid_o (pe_emit_valid_o[p]),
@@ -181,7 +184,7 @@ module qt_raster #(
       .cfg_addr_i   (cfg_addr_i),
       .cfg_data_i   (cfg_data_i),
       .set_valid_o  (set_valid[NPE + u]),
-      .set_o        (set[(NPE + u)*26 +: 26]),
+      .set_o        (set[(NPE + u)*SW +: SW]),
       .px_valid_o   (px_valid_o[u]),
       .px_fresh_o   (px_fresh_o[u*16 +: 16]),
       .px_full_o    (px_full_o[u]),
@@ -222,5 +225,17 @@ module qt_raster #(
   assign mask_set_valid_o = set_valid;
   assign mask_set_o = set;
   assign busy_o = (|fifo_rvalid) || (|pe_busy);
+
+  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // The PE placement above knows tree depths 0..4; the mask memory takes a set port per unit.
+  if (N_LOG2 < qt_pkg::N_LOG2_MIN || N_LOG2 > qt_pkg::N_LOG2_MAX) begin : g_bad_n_log2
+    $error("qt_raster: N_LOG2 must be 4..10");
+  end
+  if (TREE_LEVELS < 1 || TREE_LEVELS > N_LOG2 || TREE_LEVELS > qt_pkg::TREE_LEVELS_MAX) begin : g_bad_tree
+    $error("qt_raster: TREE_LEVELS must be 1..min(N_LOG2, 5)");
+  end
+  if (FIFO_DEPTH < 1) begin : g_bad_fifo_depth
+    $error("qt_raster: FIFO_DEPTH must be at least 1");
+  end
 
 endmodule

@@ -31,7 +31,11 @@ designs=("$@")
 mkdir -p "$out"
 command -v yosys >/dev/null || { echo "synth_report: yosys not found (tools/deps.sh installs it)" >&2; exit 2; }
 
-sources=$(echo "$root"/rtl/*.sv)
+# The RTL sources in compile order (the package first): the list rtl/qt_sources.cmake keeps for
+# every consumer, one file name per line between `set(CIG_RTL_SV_NAMES` and `)`.
+sources=$(sed -n '/^set(CIG_RTL_SV_NAMES/,/^)/s|^ *\(qt_[a-z0-9_]*\.sv\)$|'"$root"'/rtl/\1|p' "$root/rtl/qt_sources.cmake")
+[ -n "$sources" ] || { echo "synth_report: no sources in $root/rtl/qt_sources.cmake" >&2; exit 2; }
+sources=$(echo $sources)
 
 # top and -chparam arguments of a design.
 design_args() {
@@ -50,7 +54,7 @@ for d in "${designs[@]}"; do
   log="$out/$d.log"
   # Pass 1: synthesis, statistics, the mapped netlist, the modules' parameters.
   cat > "$out/$d.ys" <<EOF
-read_verilog -sv -I$root/rtl $sources
+read_verilog -sv $sources
 hierarchy -check -top $args
 proc
 opt_expr

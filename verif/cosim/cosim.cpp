@@ -25,7 +25,7 @@ Trace model_trace(const quad::Architecture& arch, const std::vector<hls::QuadWin
   cfg.input_gap_percent = stalls.input_gap_percent;
   cfg.output_stall_percent = stalls.output_stall_percent;
   quad::ArchModel<RtlArith> model(arch, cfg);
-  const RecordLayout L = rtl_layout();
+  const RtlLayout L = rtl_layout();
   Trace t;
   TraceRecorder<RtlArith> rec(L, t, model.pe_count(), model.pixel_units());
   auto masks = std::make_unique<hls::MaskMemory>();
@@ -44,7 +44,7 @@ namespace {
 
 const char* kind_name(EventKind k) { return k == EventKind::kLoad ? "load" : k == EventKind::kEmit ? "emit" : "pixel"; }
 
-std::string event_text(const RecordLayout& L, const Event& e) {
+std::string event_text(const RtlLayout& L, const Event& e) {
   std::ostringstream s;
   s << kind_name(e.kind) << " at cycle " << e.cycle;
   if (e.kind == EventKind::kLoad) s << ", mask word " << e.mask;
@@ -66,7 +66,7 @@ struct FirstMismatch {
   }
 };
 
-void compare_stream(const RecordLayout& L, const std::string& name, const std::vector<Event>& m,
+void compare_stream(const RtlLayout& L, const std::string& name, const std::vector<Event>& m,
                     const std::vector<Event>& r, Comparison& out, FirstMismatch& first) {
   const std::size_t n = std::max(m.size(), r.size());
   for (std::size_t k = 0; k < n; ++k) {
@@ -103,7 +103,7 @@ void compare_stream(const RecordLayout& L, const std::string& name, const std::v
 
 }  // namespace
 
-Comparison compare_traces(const RecordLayout& L, const Trace& model, const Trace& rtl, bool compare_cycles) {
+Comparison compare_traces(const RtlLayout& L, const Trace& model, const Trace& rtl, bool compare_cycles) {
   Comparison out;
   FirstMismatch first;
   out.cycles_equal = !compare_cycles || model.cycles == rtl.cycles;
@@ -169,11 +169,11 @@ CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<
   const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
   quad::PixelFrame<RtlArith> pixels;
   pixels.begin(frame_for_tables, cfg.raster_log2);
-  if (pixels.covers().size() > kRtlLightCovers)
+  const std::size_t light_covers = std::size_t(rtl.params().light_covers);
+  if (pixels.covers().size() > light_covers)
     throw InputError("", "light_points",
                      "the light points touch " + std::to_string(pixels.covers().size()) +
-                         " pixels; the RTL's light-cover table (LIGHT_COVERS) holds " +
-                         std::to_string(kRtlLightCovers));
+                         " pixels; the RTL's light-cover table (LIGHT_COVERS) holds " + std::to_string(light_covers));
   r.rtl = rtl.run(roots, pixels, stalls, max_cycles);
   pixels.begin(frame_for_tables, cfg.raster_log2);  // the model starts from the same tables, cleared states
   r.model = model_trace(arch, roots, pixels, stalls, 2, &r.stats);

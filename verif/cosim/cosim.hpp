@@ -28,15 +28,10 @@
 
 namespace cig::cosim {
 
-// The format the RTL implements (rtl/README.md parameters PW, GW, G).
+// The format the RTL implements (rtl/README.md parameters PW, GW, G) and its record layout.
 using RtlArith = hls::QuadFixedArith<hls::QuadFormatFine>;
-inline RecordLayout rtl_layout() {
-  return RecordLayout(hls::QuadFormatFine::kParamWidth, hls::QuadFormatFine::kGradientWidth);
-}
-
-// Entries of the RTL's light-cover table (qt_raster parameter LIGHT_COVERS, its default): one per
-// pixel that a light point touches. A frame with more lit pixels cannot be co-simulated.
-constexpr std::size_t kRtlLightCovers = 4096;
+using RtlLayout = RecordLayout<RtlArith>;
+inline RtlLayout rtl_layout() { return RtlLayout(); }
 
 struct StallConfig {
   std::uint32_t seed = 1;
@@ -79,7 +74,7 @@ struct Trace {
 template <class P>
 class TraceRecorder final : public quad::ArchTracer<P> {
  public:
-  TraceRecorder(const RecordLayout& L, Trace& t, int pes, int pixel_units) : L_(L), t_(t) {
+  TraceRecorder(const RecordLayout<P>& L, Trace& t, int pes, int pixel_units) : L_(L), t_(t) {
     t_.pe.assign(std::size_t(pes), {});
     t_.pixel.assign(std::size_t(pixel_units), {});
   }
@@ -101,7 +96,7 @@ class TraceRecorder final : public quad::ArchTracer<P> {
   }
 
  private:
-  const RecordLayout& L_;
+  const RecordLayout<P>& L_;
   Trace& t_;
 };
 
@@ -118,7 +113,7 @@ struct Comparison {
   bool ok() const { return mismatches == 0 && cycles_equal; }
 };
 
-Comparison compare_traces(const RecordLayout& L, const Trace& model, const Trace& rtl, bool compare_cycles = true);
+Comparison compare_traces(const RtlLayout& L, const Trace& model, const Trace& rtl, bool compare_cycles = true);
 
 // The Verilated configurations this build has (N_LOG2, TREE_LEVELS), and a runner for any of them.
 struct RtlConfig {
@@ -128,9 +123,22 @@ struct RtlConfig {
 };
 std::vector<RtlConfig> rtl_configs();
 
+// What a Verilated configuration was elaborated with: the public parameters of its wrapper
+// (qt_raster_cosim_tb.sv), i.e. rtl/qt_pkg.sv's layout and unit counts as the RTL computed them.
+struct RtlModelParams {
+  int ne, np, ew, aw, pw, gw, g;  // record widths (qt_raster NE .. G)
+  int win_w, pix_w, mask_set_w;   // record and mask set request widths
+  int npe, npix;                  // PEs, pixel processors
+  // Entries of the light-cover table: one per pixel that a light point touches; a frame with more
+  // lit pixels cannot be co-simulated.
+  int light_covers;
+};
+
 class RtlRunner {
  public:
   virtual ~RtlRunner() = default;
+  // What this configuration was elaborated with.
+  virtual const RtlModelParams& params() const = 0;
   // Runs one frame through the RTL: configuration from `pixels` (fog table, colours, light
   // covers), frame start, the stream with the stalls, the read-out of every pixel.
   virtual Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,

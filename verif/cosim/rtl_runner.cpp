@@ -13,9 +13,13 @@
 #include <verilated_fst_c.h>
 
 #include "Vqt_raster_n6_t1.h"
+#include "Vqt_raster_n6_t1_qt_raster_cosim_tb.h"
 #include "Vqt_raster_n6_t2.h"
+#include "Vqt_raster_n6_t2_qt_raster_cosim_tb.h"
 #include "Vqt_raster_n9_t1.h"
+#include "Vqt_raster_n9_t1_qt_raster_cosim_tb.h"
 #include "Vqt_raster_n9_t2.h"
+#include "Vqt_raster_n9_t2_qt_raster_cosim_tb.h"
 #include "common/timing.hpp"
 #pragma GCC diagnostic pop
 
@@ -26,15 +30,26 @@ namespace cig::cosim {
 
 namespace {
 
-template <class Top>
+// The public parameters of a model's wrapper module (class Tb: V<prefix>_qt_raster_cosim_tb).
+template <class Tb>
+RtlModelParams model_params() {
+  return {int(Tb::NE),  int(Tb::NP),   int(Tb::EW),          int(Tb::AW),    int(Tb::PW),
+          int(Tb::GW),  int(Tb::G),    int(Tb::WIN_W),       int(Tb::PIX_W), int(Tb::MASK_SET_W),
+          int(Tb::NPE), int(Tb::NPIX), int(Tb::LIGHT_COVERS)};
+}
+
+template <class Top, class Tb>
 class RtlRunnerImpl final : public RtlRunner {
  public:
-  RtlRunnerImpl(int raster_log2, int tree_levels)
-      : ctx_(std::make_unique<VerilatedContext>()), n_(raster_log2), tree_(tree_levels), L_(rtl_layout()) {
+  explicit RtlRunnerImpl(int raster_log2)
+      : ctx_(std::make_unique<VerilatedContext>()),
+        n_(raster_log2),
+        params_(model_params<Tb>()),
+        npe_(params_.npe),
+        npix_(params_.npix),
+        L_(rtl_layout()) {
     ctx_->traceEverOn(true);
     top_ = std::make_unique<Top>(ctx_.get());
-    npe_ = (n_ - tree_) + int(((1LL << (2 * tree_)) - 1) / 3);
-    npix_ = int(1LL << (2 * (tree_ - 1)));
     top_->clk_i = 0;
     top_->rst_ni = 0;
     top_->frame_start_i = 0;
@@ -51,6 +66,8 @@ class RtlRunnerImpl final : public RtlRunner {
     if (fst_) fst_->close();
     top_->final();
   }
+
+  const RtlModelParams& params() const override { return params_; }
 
   void trace_to(const std::string& file) override {
     fst_ = std::make_unique<VerilatedFstC>();
@@ -129,8 +146,9 @@ class RtlRunnerImpl final : public RtlRunner {
         }
       for (int s = 0; s < npe_ + npix_; ++s)
         if (port_bit(top_->mask_set_valid_o, s)) {
-          const std::uint64_t m = port_field(top_->mask_set_o, 26 * s, 26);
-          t.mask_sets.push_back({cycle, int((m >> 22) & 15), int((m >> 12) & 1023), int((m >> 2) & 1023), int(m & 3)});
+          const auto m =
+              MaskSetLayout::decode(port_field(top_->mask_set_o, MaskSetLayout::width * s, MaskSetLayout::width));
+          t.mask_sets.push_back({cycle, m.level, m.x, m.y, m.child});
         }
       if (offer && top_->poly_ready_o) ++next;
       fall();
@@ -226,8 +244,10 @@ class RtlRunnerImpl final : public RtlRunner {
   std::unique_ptr<Top> top_;
   std::unique_ptr<VerilatedFstC> fst_;
   std::uint64_t time_ = 0;
-  int n_, tree_, npe_ = 0, npix_ = 1;
-  RecordLayout L_;
+  int n_;
+  RtlModelParams params_;
+  int npe_, npix_;
+  RtlLayout L_;
   std::vector<std::uint64_t> fog_loaded_ = std::vector<std::uint64_t>(hls::kFogTableSize, 0);
   bool fog_valid_ = false;
   std::vector<std::uint32_t> light_pixels_;
@@ -238,10 +258,14 @@ class RtlRunnerImpl final : public RtlRunner {
 std::vector<RtlConfig> rtl_configs() { return {{6, 1}, {6, 2}, {9, 1}, {9, 2}}; }
 
 std::unique_ptr<RtlRunner> make_rtl_runner(int raster_log2, int tree_levels) {
-  if (raster_log2 == 6 && tree_levels == 1) return std::make_unique<RtlRunnerImpl<Vqt_raster_n6_t1>>(6, 1);
-  if (raster_log2 == 6 && tree_levels == 2) return std::make_unique<RtlRunnerImpl<Vqt_raster_n6_t2>>(6, 2);
-  if (raster_log2 == 9 && tree_levels == 1) return std::make_unique<RtlRunnerImpl<Vqt_raster_n9_t1>>(9, 1);
-  if (raster_log2 == 9 && tree_levels == 2) return std::make_unique<RtlRunnerImpl<Vqt_raster_n9_t2>>(9, 2);
+  if (raster_log2 == 6 && tree_levels == 1)
+    return std::make_unique<RtlRunnerImpl<Vqt_raster_n6_t1, Vqt_raster_n6_t1_qt_raster_cosim_tb>>(6);
+  if (raster_log2 == 6 && tree_levels == 2)
+    return std::make_unique<RtlRunnerImpl<Vqt_raster_n6_t2, Vqt_raster_n6_t2_qt_raster_cosim_tb>>(6);
+  if (raster_log2 == 9 && tree_levels == 1)
+    return std::make_unique<RtlRunnerImpl<Vqt_raster_n9_t1, Vqt_raster_n9_t1_qt_raster_cosim_tb>>(9);
+  if (raster_log2 == 9 && tree_levels == 2)
+    return std::make_unique<RtlRunnerImpl<Vqt_raster_n9_t2, Vqt_raster_n9_t2_qt_raster_cosim_tb>>(9);
   return nullptr;
 }
 

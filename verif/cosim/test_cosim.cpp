@@ -153,10 +153,15 @@ TEST(Cosim, StallsRandomGapsAndBackPressure) {
     for (int t = 1; t <= 2; ++t) expect_equal(f, 6, t, StallConfig{seed, 35, 40});
 }
 
-// More lit pixels than the RTL's light-cover table holds: a clear input error before any cycle.
+// More lit pixels than the RTL's light-cover table holds (its LIGHT_COVERS, read from the
+// Verilated model): a clear input error before any cycle.
 TEST(Cosim, TooManyLitPixelsIsAnInputError) {
+  auto rtl = make_rtl_runner(9, 1);
+  ASSERT_TRUE(rtl != nullptr);
+  const int covers = rtl->params().light_covers;
+  ASSERT_EQ(covers, 4096);  // the default the README documents
   ScreenFrame f = empty_frame(512);
-  for (int k = 0; k < int(kRtlLightCovers) + 100; ++k) {
+  for (int k = 0; k < covers + 100; ++k) {
     ScreenLightPoint l;
     l.xs = -0.99 + 1.98 * double(k % 100) / 100.0;
     l.ys = -0.99 + 1.98 * double(k / 100) / 100.0;
@@ -165,13 +170,13 @@ TEST(Cosim, TooManyLitPixelsIsAnInputError) {
     l.colour = {1, 1, 1};
     f.light_points.push_back(l);
   }
-  auto rtl = make_rtl_runner(9, 1);
-  ASSERT_TRUE(rtl != nullptr);
   try {
     cosim_frame(f, *rtl, RtlConfig{9, 1}, {});
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("light-cover table (LIGHT_COVERS) holds 4096"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("light-cover table (LIGHT_COVERS) holds " + std::to_string(covers)),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -205,6 +210,37 @@ TEST(Cosim, EmptyFrameTakesTheFrameStartCycleOnBothSides) {
       EXPECT_EQ(r.model.cycles, 1);
       EXPECT_EQ(r.rtl.cycles, 1);
     }
+}
+
+// The C++ field table (record_bits.hpp: widths from the hls/ types) against what every Verilated
+// configuration elaborated from rtl/qt_pkg.sv (its wrapper's public parameters), and the unit
+// counts against the architecture model's: an edit of one side alone fails here, by name.
+// (rtl.RtlWindowFields.* checks every field's offset.)
+TEST(RtlLayout, FieldTableMatchesTheVerilatedModels) {
+  const RtlLayout L = rtl_layout();
+  ASSERT_FALSE(rtl_configs().empty());
+  for (const RtlConfig& cfg : rtl_configs()) {
+    SCOPED_TRACE(cfg.arch_text());
+    auto rtl = make_rtl_runner(cfg.raster_log2, cfg.tree_levels);
+    ASSERT_TRUE(rtl != nullptr);
+    const RtlModelParams& m = rtl->params();
+    EXPECT_EQ(m.ne, L.field_count(RecordField::kD)) << "NE: edges (hls kQuadMaxEdges)";
+    EXPECT_EQ(m.ne, L.field_count(RecordField::kA)) << "NE: edge gradients";
+    EXPECT_EQ(m.np, L.field_count(RecordField::kF)) << "NP: parameters (hls kQuadParams)";
+    EXPECT_EQ(m.np, L.field_count(RecordField::kDpDi)) << "NP: parameter gradients";
+    EXPECT_EQ(m.ew, L.slot(RecordField::kD).width) << "EW: hls EdgeValue";
+    EXPECT_EQ(m.aw, L.slot(RecordField::kA).width) << "AW: hls EdgeGradient";
+    EXPECT_EQ(m.pw, L.slot(RecordField::kF).width) << "PW: RtlArith::Param";
+    EXPECT_EQ(m.gw, L.slot(RecordField::kDpDi).width) << "GW: RtlArith::Gradient";
+    EXPECT_EQ(m.g, RtlArith::G) << "G";
+    EXPECT_EQ(m.win_w, L.win_w) << "WIN_W";
+    EXPECT_EQ(m.pix_w, L.pix_w) << "PIX_W";
+    EXPECT_EQ(m.mask_set_w, MaskSetLayout::width) << "MASK_SET_W: hls mask_memory_top's request";
+    const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
+    const quad::ArchModel<RtlArith> model(arch, quad::ArchConfig{});
+    EXPECT_EQ(m.npe, model.pe_count()) << "NPE";
+    EXPECT_EQ(m.npix, model.pixel_units()) << "NPIX";
+  }
 }
 
 }  // namespace

@@ -53,11 +53,17 @@ void set_port_bits(VlWide<N>& v, const Bits& b, int width) {
   for (int i = 0; i < width; ++i)
     if (b.get(i, 1)) v[std::size_t(i >> 5)] |= 1u << (i & 31);
 }
-// `width` bits of a wide port from bit `lo`.
+// `width` bits of a port from bit `lo`.
 template <std::size_t N>
 Bits port_bits(const VlWide<N>& v, int lo, int width) {
   Bits b;
   b.load(v.data(), lo, width);
+  return b;
+}
+template <class T>
+Bits port_bits(const T& v, int lo, int width) {
+  Bits b(width);
+  b.put(0, width, port_field(v, lo, width));
   return b;
 }
 

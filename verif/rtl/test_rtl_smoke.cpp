@@ -7,6 +7,8 @@
 //     (extreme edge values, gradients, parameters) with random mask words and random output
 //     back-pressure: the children it emits, their order, full flags and mask set requests against
 //     evaluate_child;
+//   * qt_window_fields: every field of random windows at the offset of the C++ field table
+//     (cosim/record_bits.hpp), i.e. rtl/qt_pkg.sv's layout and the table agree field by field;
 // Whole architectures (qt_raster) are compared with the kernels and the architecture model, record
 // for record and cycle for cycle, by verif/cosim.
 #include <cstdint>
@@ -26,6 +28,7 @@
 #include "Vqt_pe_n4_l4.h"
 #include "Vqt_pe_n9_l5.h"
 #include "Vqt_pixel_lane.h"
+#include "Vqt_window_fields.h"
 #pragma GCC diagnostic pop
 #include "cosim/record_bits.hpp"
 #include "cosim/verilator_ports.hpp"
@@ -39,10 +42,10 @@ namespace {
 using namespace cig;
 using P = hls::QuadFixedArith<hls::QuadFormatFine>;  // the RTL's default widths (rtl/README.md)
 using cosim::Bits;
-using cosim::RecordLayout;
+using cosim::MaskSetLayout;
+using cosim::RecordField;
+using Layout = cosim::RecordLayout<P>;
 using Rng = std::mt19937_64;
-
-RecordLayout layout() { return RecordLayout(hls::QuadFormatFine::kParamWidth, hls::QuadFormatFine::kGradientWidth); }
 
 using cosim::port_bits;
 using cosim::port_field;
@@ -222,7 +225,7 @@ struct Emitted {
 template <class M>
 void pe_run(M& m, const hls::QuadWindow<P>& w, unsigned mask, Rng& r, int level, std::vector<Emitted>& out,
             std::vector<int>& sets) {
-  const RecordLayout L = layout();
+  const Layout L;
   m.in_valid_i = 1;
   set_port_bits(m.in_data_i, cosim::pack_record(L, w, 0), L.pix_w);
   m.mask_word_i = std::uint8_t(mask);
@@ -248,10 +251,11 @@ void pe_run(M& m, const hls::QuadWindow<P>& w, unsigned mask, Rng& r, int level,
       out.push_back({int(m.emit_child_o), bool(m.emit_full_o), port_bits(m.out_data_o, 0, L.pix_w)});
     }
     if (m.set_valid_o) {
-      ASSERT_EQ(port_field(m.set_o, 22, 4), std::uint64_t(level - 1));
-      ASSERT_EQ(port_field(m.set_o, 12, 10), w.x.value());
-      ASSERT_EQ(port_field(m.set_o, 2, 10), w.y.value());
-      sets.push_back(int(port_field(m.set_o, 0, 2)));
+      const MaskSetLayout::Fields set = MaskSetLayout::decode(port_field(m.set_o, 0, MaskSetLayout::width));
+      ASSERT_EQ(set.level, level - 1);
+      ASSERT_EQ(std::uint64_t(set.x), w.x.value());
+      ASSERT_EQ(std::uint64_t(set.y), w.y.value());
+      sets.push_back(set.child);
     }
     m.clk_i = 1;
     m.eval();
@@ -272,7 +276,7 @@ void pe_random_test(int n, int level, int windows, std::uint64_t seed) {
   m.eval();
   m.rst_ni = 1;
   m.eval();
-  const RecordLayout L = layout();
+  const Layout L;
   Rng r(seed);
   long covered = 0, full = 0;
   for (int k = 0; k < windows; ++k) {
@@ -309,6 +313,54 @@ void pe_random_test(int n, int level, int windows, std::uint64_t seed) {
 
 TEST(RtlPe, MiddleLevelMatchesEvaluateChild) { pe_random_test<Vqt_pe_n9_l5>(9, 5, 3000, 21); }
 TEST(RtlPe, PixelLevelMatchesEvaluateChild) { pe_random_test<Vqt_pe_n4_l4>(4, 4, 3000, 22); }
+
+// ---- qt_window_fields ---------------------------------------------------------------------------
+
+// Random windows packed by the C++ field table read back through qt_window_fields, whose slices
+// are rtl/qt_pkg.sv's offsets: each port against the bits the table puts the field in. A field
+// moved, resized or added on one side only fails here, with its name.
+TEST(RtlWindowFields, EveryFieldAtTheTablesOffset) {
+  auto ctx = std::make_unique<VerilatedContext>();
+  Vqt_window_fields m(ctx.get());
+  const Layout L;
+  Rng r(31);
+  for (int k = 0; k < 300; ++k) {
+    Bits window(L.win_w);
+    for (int lo = 0; lo < L.win_w; lo += 32) window.put(lo, std::min(32, L.win_w - lo), r());
+    set_port_bits(m.window_i, window, L.win_w);
+    m.eval();
+    auto field = [&](int lo, int width) {
+      Bits b;
+      b.load(window.words(), lo, width);
+      return b;
+    };
+    auto check = [&](RecordField f, const Bits& port, const char* name) {
+      ASSERT_TRUE(port == field(L.field_lo(f), L.field_width(f)))
+          << name << " (table: bits " << L.field_lo(f) << " +: " << L.field_width(f) << ", port width " << port.width()
+          << ")";
+    };
+    check(RecordField::kLevel, port_bits(m.level_o, 0, L.field_width(RecordField::kLevel)), "level_o");
+    check(RecordField::kX, port_bits(m.x_o, 0, L.field_width(RecordField::kX)), "x_o");
+    check(RecordField::kY, port_bits(m.y_o, 0, L.field_width(RecordField::kY)), "y_o");
+    check(RecordField::kD, port_bits(m.d_o, 0, L.field_width(RecordField::kD)), "d_o");
+    check(RecordField::kF, port_bits(m.f_o, 0, L.field_width(RecordField::kF)), "f_o");
+    check(RecordField::kId, port_bits(m.id_o, 0, L.field_width(RecordField::kId)), "id_o");
+    check(RecordField::kOpaque, port_bits(m.opaque_o, 0, L.field_width(RecordField::kOpaque)), "opaque_o");
+    check(RecordField::kColour, port_bits(m.colour_o, 0, L.field_width(RecordField::kColour)), "colour_o");
+    check(RecordField::kEdgeCount, port_bits(m.edge_count_o, 0, L.field_width(RecordField::kEdgeCount)),
+          "edge_count_o");
+    check(RecordField::kA, port_bits(m.a_o, 0, L.field_width(RecordField::kA)), "a_o");
+    check(RecordField::kB, port_bits(m.b_o, 0, L.field_width(RecordField::kB)), "b_o");
+    check(RecordField::kDpDi, port_bits(m.dp_di_o, 0, L.field_width(RecordField::kDpDi)), "dp_di_o");
+    check(RecordField::kDpDj, port_bits(m.dp_dj_o, 0, L.field_width(RecordField::kDpDj)), "dp_dj_o");
+    check(RecordField::kWExponent, port_bits(m.w_exponent_o, 0, L.field_width(RecordField::kWExponent)),
+          "w_exponent_o");
+    // The polygon's constants: id up to the end of the window.
+    const int poly_lo = L.field_lo(RecordField::kId);
+    ASSERT_TRUE(port_bits(m.poly_o, 0, L.win_w - poly_lo) == field(poly_lo, L.win_w - poly_lo)) << "poly_o";
+    if (HasFatalFailure()) return;
+  }
+}
 
 // ---- qt_raster ----------------------------------------------------------------------------------
 
