@@ -79,7 +79,7 @@ namespace {
 
 // One engine per value of the varied option (each checked against the frames by run()).
 std::vector<std::unique_ptr<RasterEngine>> make_engines(const SweepCommand& c, const EngineOptions& base,
-                                                        const Varied& varied, const FrameJobs& jobs) {
+                                                        const Varied& varied) {
   std::vector<std::unique_ptr<RasterEngine>> engines;
   for (const auto& value : varied.values) {
     EngineOptions o = base;
@@ -141,7 +141,7 @@ int SweepCommand::run() {
   const EngineOptions ro = reference_options(reference);
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
-  std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied, jobs);
+  std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied);
   for (std::size_t v = 0; v < engines.size(); ++v) {
     try {
       jobs.check_capacity(*engines[v]);

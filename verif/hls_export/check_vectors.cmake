@@ -1,0 +1,22 @@
+# ctest hls_export.vectors_current: regenerates every kernel's golden vectors into WORK and requires
+# each to equal the committed copy in GOLDEN. On a difference: a kernel's bits changed; review the
+# change and rewrite the vectors with `cig_hls_vectors verif/golden/hls scenes`.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+execute_process(COMMAND ${GENERATOR} ${WORK} ${SCENES} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "cig_hls_vectors failed (${rc}): ${err}")
+endif()
+foreach(top IN LISTS TOPS)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/${top}.vec ${GOLDEN}/${top}.vec RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "${GOLDEN}/${top}.vec differs from what the kernel computes today (${WORK}/${top}.vec)")
+  endif()
+endforeach()
+file(GLOB committed RELATIVE ${GOLDEN} ${GOLDEN}/*.vec)
+list(LENGTH committed n)
+list(LENGTH TOPS m)
+if(NOT n EQUAL m)
+  message(FATAL_ERROR "${GOLDEN} holds ${n} vector files for ${m} kernels")
+endif()
+message(STATUS "${m} vector files current")

@@ -1,0 +1,71 @@
+// Testbench case of frame_memory_write_top (hls/segment/frame_memory.hpp). The frame memory is
+// state, so a vector is a sequence: the memory before, up to kCalls polygons written one call
+// each, then every call's result and the memory after.
+#pragma once
+
+#include "fields_segment.hpp"
+#include "hls/segment/frame_memory.hpp"
+#include "hls/segment/segment_arith.hpp"
+
+bool frame_memory_write_top(const cig::hls::PolygonEdges<cig::hls::DefaultSegmentArith>& e,
+                            cig::hls::FrameMemory<cig::hls::DefaultSegmentArith>& m);
+
+namespace cig::hls_tb {
+
+template <class P>
+struct Fields<hls::FrameWord<P>> {
+  template <class V, class R>
+  static void visit(V& v, R& r) {
+    v(r.is_header, "is_header"), v(r.header, "header"), v(r.edge, "edge");
+  }
+};
+template <class P, int K>
+struct Fields<hls::FrameMemory<P, K>> {
+  template <class V, class R>
+  static void visit(V& v, R& r) {
+    v(r.bank, "bank"), v(r.used, "used"), v(r.write_bank, "write_bank");
+    v(r.polygons_written, "polygons_written"), v(r.polygons_overflowed, "polygons_overflowed");
+  }
+};
+
+struct FrameMemoryWriteTopCase {
+  static constexpr const char* kTop = "frame_memory_write_top";
+  static constexpr int kCalls = 48;
+  using Memory = hls::FrameMemory<hls::DefaultSegmentArith>;
+  struct Input {
+    Memory memory;
+    int calls = 0;
+    hls::PolygonEdges<hls::DefaultSegmentArith> e[kCalls];
+  };
+  struct Output {
+    bool written[kCalls] = {};
+    Memory memory;
+  };
+  static void run(const Input& i, Output& o) {
+    o.memory = i.memory;
+    for (int k = 0; k < i.calls && k < kCalls; ++k)
+      o.written[k] = CIG_TB_DESIGN(frame_memory_write_top)(i.e[k], o.memory);
+  }
+  template <class V>
+  static void ports(V& v, const Input& i, const Output& o) {
+    v("e", "in", "const PolygonEdges<DefaultSegmentArith>&", i.e[0]);
+    v("m", "inout", "FrameMemory<DefaultSegmentArith>&", i.memory);
+    v("return", "out", "bool", o.written[0]);
+  }
+};
+template <>
+struct Fields<FrameMemoryWriteTopCase::Input> {
+  template <class V, class R>
+  static void visit(V& v, R& r) {
+    v(r.memory, "memory"), v(r.calls, "calls"), v(r.e, "e");
+  }
+};
+template <>
+struct Fields<FrameMemoryWriteTopCase::Output> {
+  template <class V, class R>
+  static void visit(V& v, R& r) {
+    v(r.written, "written"), v(r.memory, "memory");
+  }
+};
+
+}  // namespace cig::hls_tb

@@ -1,0 +1,134 @@
+// The hand-off testbench's main, shared by every kernel: replays a golden vector file through the
+// kernel's top and compares every output bit. One file per kernel (tb_<top>.cpp) instantiates it.
+//
+//   tb_<top> [VECTORS]   replay VECTORS (default vectors/<top>.vec); exit 0 when every vector
+//                        matches, 1 on any difference (the first differing field of each vector is
+//                        printed), 2 when the file is missing, malformed or holds no vector
+//   tb_<top> --ports     print the top's ports (direction, C++ type, bits, fields) as Markdown rows
+//
+// Vector file: '#' comment lines; "top NAME"; then per vector a "> inputs" line followed by a
+// "< outputs" line, the records written as vector_io.hpp describes.
+#pragma once
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "vector_io.hpp"
+
+namespace cig::hls_tb {
+
+// "name bits, name NxBits, ..." of a record (of an array's element); "" for a leaf.
+template <class T>
+std::string field_summary(const T& x) {
+  if constexpr (std::is_array_v<T>) return field_summary(x[0]);
+  else if constexpr (Leaf<T>::is) return "";
+  else {
+    FieldLister lister;
+    Fields<T>::visit(lister, x);
+    std::string s;
+    for (const FieldWidth& f : lister.fields) {
+      s += s.empty() ? "" : ", ";
+      s += f.name + " " + (f.count > 1 ? std::to_string(f.count) + "x" : "") + std::to_string(f.element_bits);
+    }
+    return s;
+  }
+}
+
+struct PortPrinter {
+  template <class T>
+  void operator()(const char* name, const char* direction, const char* type, const T& value) {
+    std::cout << "| `" << name << "` | " << direction << " | `" << type << "` | " << bits_of(value) << " | "
+              << field_summary(value) << " |\n";
+  }
+};
+
+// Reads the next non-comment line; false at the end of the file.
+inline bool next_line(std::istream& in, std::string& line, int& number) {
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line[0] != '#') return true;
+  }
+  return false;
+}
+
+template <class T>
+bool parse_record(const std::string& text, T& record, const std::string& where) {
+  TextReader reader(text);
+  reader.read(record);
+  reader.finish();
+  if (reader.error().empty()) return true;
+  std::cerr << where << ": " << reader.error() << '\n';
+  return false;
+}
+
+template <class Case>
+int replay(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) return std::cerr << file << ": cannot read the vector file\n", 2;
+  std::string line;
+  int number = 0;
+  const std::string header = std::string("top ") + Case::kTop;
+  if (!next_line(in, line, number) || line != header)
+    return std::cerr << file << ":" << number << ": the first line must be '" << header << "'\n", 2;
+  int vectors = 0, failed = 0;
+  while (next_line(in, line, number)) {
+    const std::string at = file + ":" + std::to_string(number);
+    if (line.rfind("> ", 0) != 0) return std::cerr << at << ": expected a '> inputs' line\n", 2;
+    auto input = std::make_unique<typename Case::Input>();
+    auto expected = std::make_unique<typename Case::Output>();
+    auto got = std::make_unique<typename Case::Output>();
+    if (!parse_record(line.substr(2), *input, at)) return 2;
+    if (!next_line(in, line, number) || line.rfind("< ", 0) != 0)
+      return std::cerr << file << ":" << number << ": expected a '< outputs' line after line " << at << "\n", 2;
+    if (!parse_record(line.substr(2), *expected, file + ":" + std::to_string(number))) return 2;
+    Case::run(*input, *got);
+    const std::string diff = first_difference(*expected, *got);
+    if (!diff.empty()) {
+      ++failed;
+      std::cout << Case::kTop << ": vector " << vectors << " (" << at << ") differs: " << diff << '\n';
+    }
+    ++vectors;
+  }
+  if (vectors == 0) return std::cerr << file << ": no vectors\n", 2;
+  std::cout << Case::kTop << ": " << vectors - failed << " of " << vectors << " vectors match\n";
+  return failed == 0 ? 0 : 1;
+}
+
+template <class Case>
+int testbench_main(int argc, char** argv) {
+  std::string file = std::string("vectors/") + Case::kTop + ".vec";
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    if (a == "--ports") {
+      auto input = std::make_unique<typename Case::Input>();
+      auto output = std::make_unique<typename Case::Output>();
+      PortPrinter printer;
+      Case::ports(printer, *input, *output);
+      return 0;
+    }
+    if (a.empty() || a[0] == '-' || k + 1 < argc) {
+      std::cerr << "usage: tb_" << Case::kTop << " [VECTORS] | --ports\n";
+      return 2;
+    }
+    file = a;
+  }
+  return replay<Case>(file);
+}
+
+}  // namespace cig::hls_tb
+
+// The testbench's main (CCS_MAIN under Catapult's SCVerify).
+#ifdef CCS_SCVERIFY
+#define CIG_TB_MAIN(Case) \
+  CCS_MAIN(int argc, char** argv) { CCS_RETURN(cig::hls_tb::testbench_main<Case>(argc, argv)); }
+#else
+#define CIG_TB_MAIN(Case) \
+  int main(int argc, char** argv) { return cig::hls_tb::testbench_main<Case>(argc, argv); }
+#endif
+
+#ifdef CIG_HLS_SYSTEMC
+// SystemC's library defines main() and calls sc_main; the testbench has its own main.
+int sc_main(int, char**) { return 0; }
+#endif
