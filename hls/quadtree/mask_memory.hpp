@@ -39,10 +39,13 @@ inline void mask_clear(MaskMemory& m, int raster_log2) {
 inline UInt<4> mask_read(const MaskMemory& m, int level, int x, int y) { return m.word[mask_index(level, x, y)]; }
 
 // Sets bit q of word (level, x, y) and feeds full words upward. Returns the number of words that
-// became full (statistics).
+// became full (statistics). Windows of level 0..kQuadMaxLevels - 1 have words; a request for
+// another level sets nothing, and x, y keep their low `level` bits (the address lines a word of
+// that level has), so no request reaches outside the memory.
 inline int mask_set(MaskMemory& m, int level, int x, int y, int q) {
   int became_full = 0;
-  int l = level, wx = x, wy = y, bit = q;
+  if (level < 0 || level >= kQuadMaxLevels) return 0;
+  int l = level, wx = x & ((1 << level) - 1), wy = y & ((1 << level) - 1), bit = q & 3;
   for (int step = 0; step < kQuadMaxLevels; ++step) {
     if (l < 0) break;
     const int idx = mask_index(l, wx, wy);

@@ -90,6 +90,12 @@ class VectorFile {
 };
 
 // ---- Primitives ---------------------------------------------------------------------------------
+// One draw per statement: the order of a call's arguments is unspecified (g++ and clang differ).
+Rgb random_colour(Rng& rng) {
+  const double r = rng.uniform(0, 1), g = rng.uniform(0, 1), b = rng.uniform(0, 1);
+  return Rgb(r, g, b);
+}
+
 ScreenPolygon random_polygon(Rng& rng) {
   ScreenPolygon p;
   const int n = 3 + rng.below(14);
@@ -107,7 +113,7 @@ ScreenPolygon random_polygon(Rng& rng) {
     v.is = rng.uniform(0, 1);
     p.vertices.push_back(v);
   }
-  p.colour = Rgb(rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1));
+  p.colour = random_colour(rng);
   p.opaque = !rng.chance(0.15);
   p.protect = rng.chance(0.1);
   return p;
@@ -119,7 +125,7 @@ ScreenLightPoint random_light(Rng& rng) {
   l.ys = rng.uniform(-1.02, 1.02);
   l.zs = std::exp(rng.uniform(0, 9));
   l.ds = rng.chance(0.2) ? 0.0 : rng.uniform(0, 0.03);
-  l.colour = Rgb(rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1));
+  l.colour = random_colour(rng);
   l.intensity = rng.uniform(0, 1);
   return l;
 }
@@ -391,7 +397,8 @@ void write_mask_memory(const std::string& dir, Rng& rng) {
     in->calls = MaskMemoryTopCase::kCalls;
     for (int k = 0; k < in->calls; ++k) {
       // Requests come in groups of four: the children of one window, so that full parents occur.
-      const int level = 1 + (k / 4 * 7 + log2) % log2, side = 1 << (level - 1);
+      // A request names a window of level 0..n-1 (its mask word; children at level n are pixels).
+      const int level = (k / 4 * 7 + log2) % log2, side = 1 << level;
       const int x = (k / 4 * 5) % side, y = (k / 4 * 3) % side;
       const bool random = rng.chance(0.25);
       in->level[k] = hls::UInt<4>(level);
