@@ -11,6 +11,13 @@
 // symbolic perturbation of the sample to (x + e, y + e^2) with e -> 0+, so at shared vertices too
 // exactly one polygon of a tiling owns the sample. In raster terms: left and top edges are
 // inclusive, right and bottom edges exclusive (the top-left rule, y pointing down).
+//
+// Crossing rule. Snapping a convex polygon's vertices to the formatter grid can make it
+// non-convex, self-intersecting (a sliver whose vertices cross becomes a bow-tie) or reversed. Such
+// a polygon covers the samples whose perturbed point (x + e, y + e^2) has an odd crossing number:
+// the edges whose Y range holds y (half-open, [y_min, y_max)) and whose crossing with the row lies
+// right of x, a crossing exactly at x counting as left of x + e. For a convex polygon this is the
+// same set as the edge functions' (the edge-function test is just faster), so the rule is one.
 #pragma once
 
 #include <algorithm>
@@ -33,16 +40,30 @@ struct CoverageSetup {
   int src[kMaxScreenVertices];                          // index of each vertex in the input
   EdgeEquation edge[kMaxScreenVertices];
   double ymin = 0, ymax = 0;
-  bool empty = true;  // zero area: covers nothing
+  bool empty = true;   // zero area: covers nothing
+  bool convex = true;  // false: the crossing rule decides (snapped non-convex or self-intersecting)
 
   // True when sample (i, j) is covered (E > 0 on every edge, or E == 0 on an owned edge).
   bool covers(double qx, double qy) const {
+    if (!convex) return odd_crossings(qx, qy);
     for (int k = 0; k < n; ++k) {
       const EdgeEquation& e = edge[k];
       const double c = e.sign * (e.dx * (qy - e.ay) - e.dy * (qx - e.ax));
       if (c < 0 || (c == 0 && !e.owns_ties)) return false;
     }
     return true;
+  }
+
+  // The crossing rule (above): E of the canonical edge (dy > 0) is positive where the edge's
+  // crossing with the row lies right of the sample.
+  bool odd_crossings(double qx, double qy) const {
+    bool inside = false;
+    for (int k = 0; k < n; ++k) {
+      const EdgeEquation& e = edge[k];
+      if (e.dy == 0 || qy < e.ay || qy >= e.ay + e.dy) continue;
+      if (e.dx * (qy - e.ay) - e.dy * (qx - e.ax) > 0) inside = !inside;
+    }
+    return inside;
   }
 
   // Left and right ends of the polygon's intersection with row y (ymin <= y <= ymax), with the
@@ -75,6 +96,32 @@ struct CoverageSetup {
   }
 };
 
+// Exact on the snapped grid (dyadic coordinates): every turn has the orientation's sign (or is
+// straight) and the boundary runs once around (its Y changes direction at most twice), so the
+// polygon is convex and the edge functions decide its coverage.
+inline bool is_convex(const double* x, const double* y, int n, double area2) {
+  if (!(area2 != 0)) return false;
+  int y_turns = 0;
+  for (int k = 0; k < n; ++k) {
+    const int k1 = (k + 1) % n, k2 = (k + 2) % n;
+    const double turn = (x[k1] - x[k]) * (y[k2] - y[k1]) - (y[k1] - y[k]) * (x[k2] - x[k1]);
+    if (turn * area2 < 0) return false;
+    // Direction changes of Y along the boundary (horizontal edges skipped).
+    const double d0 = y[k1] - y[k];
+    int j = k2;
+    double d1 = y[k2] - y[k1];
+    for (int s = 0; s < n && d1 == 0; ++s, j = (j + 1) % n) d1 = y[(j + 1) % n] - y[j];
+    if (d0 != 0 && d0 * d1 < 0) ++y_turns;
+  }
+  return y_turns <= 2;
+}
+
+inline bool all_collinear(const double* x, const double* y, int n) {
+  for (int k = 2; k < n; ++k)
+    if ((x[1] - x[0]) * (y[k] - y[0]) - (y[1] - y[0]) * (x[k] - x[0]) != 0) return false;
+  return true;
+}
+
 // Builds the edge equations from vertices in sample coordinates. Zero-area polygons are empty.
 // Repeated consecutive vertices (snapping can merge two) are dropped: a zero-length edge has
 // C = 0 everywhere and would otherwise reject every sample.
@@ -98,7 +145,10 @@ inline CoverageSetup setup_coverage(const double* in_x, const double* in_y, int 
     const int k1 = (k + 1) % n;
     area2 += xs[k] * ys[k1] - xs[k1] * ys[k];
   }
-  s.empty = !(area2 != 0) || n < 3;
+  s.convex = is_convex(xs, ys, n, area2);
+  // A bow-tie can have zero signed area and still cover samples: empty only when every vertex
+  // lies on one line.
+  s.empty = n < 3 || (s.convex && !(area2 != 0)) || all_collinear(xs, ys, n);
   if (s.empty) return s;
   const double orientation = area2 > 0 ? 1.0 : -1.0;
   s.ymin = s.ymax = ys[0];

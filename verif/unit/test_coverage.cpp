@@ -66,8 +66,37 @@ CoverageSetup setup(const std::vector<P2>& p) {
   return setup_coverage(x, y, int(p.size()));
 }
 
+// One polygon compared sample by sample with the brute force over its bounding box (plus a
+// margin); `got` is an m x m scratch image, all zero between calls. Returns the covered samples.
+long expect_equals_brute_force(const std::vector<P2>& h, int m, double scale, std::vector<char>& got, int t) {
+  const CoverageSetup s = setup(h);
+  long count = 0;
+  for_each_covered_sample(s, m, [&](int i, int j) {
+    got[std::size_t(j) * std::size_t(m) + std::size_t(i)] = 1;
+    ++count;
+  });
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const P2& p : h) {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  long expect = 0;
+  for (int j = std::max(0, int(y0) - 2); j <= std::min(m - 1, int(y1) + 2); ++j)
+    for (int i = std::max(0, int(x0) - 2); i <= std::min(m - 1, int(x1) + 2); ++i) {
+      const bool in = brute_force_inside(h, i, j, scale);
+      expect += in;
+      char& g = got[std::size_t(j) * std::size_t(m) + std::size_t(i)];
+      EXPECT_EQ(bool(g), in) << "polygon " << t << " sample (" << i << ", " << j << ")";
+      g = 0;
+    }
+  EXPECT_EQ(count, expect) << "polygon " << t;
+  return count;
+}
+
 // Random convex polygons with coordinates on a dyadic grid of step 1/scale, compared sample by
-// sample with the brute force over their bounding box (plus a margin).
+// sample with the brute force.
 void compare_random_polygons(int m, double scale, int polygons, unsigned seed, bool reverse) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-0.5, m - 0.5);
@@ -91,30 +120,8 @@ void compare_random_polygons(int m, double scale, int polygons, unsigned seed, b
     std::vector<P2> h = hull(pts);
     if (h.size() < 3 || int(h.size()) > kMaxScreenVertices) continue;
     if (reverse) std::reverse(h.begin(), h.end());
-    const CoverageSetup s = setup(h);
-    long count = 0;
-    for_each_covered_sample(s, m, [&](int i, int j) {
-      got[std::size_t(j) * std::size_t(m) + std::size_t(i)] = 1;
-      ++count;
-    });
-    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (const P2& p : h) {
-      x0 = std::min(x0, p.x);
-      x1 = std::max(x1, p.x);
-      y0 = std::min(y0, p.y);
-      y1 = std::max(y1, p.y);
-    }
-    long expect = 0;
-    for (int j = std::max(0, int(y0) - 2); j <= std::min(m - 1, int(y1) + 2); ++j)
-      for (int i = std::max(0, int(x0) - 2); i <= std::min(m - 1, int(x1) + 2); ++i) {
-        const bool in = brute_force_inside(h, i, j, scale);
-        expect += in;
-        char& g = got[std::size_t(j) * std::size_t(m) + std::size_t(i)];
-        ASSERT_EQ(bool(g), in) << "polygon " << t << " sample (" << i << ", " << j << ")";
-        g = 0;
-      }
-    ASSERT_EQ(count, expect) << "polygon " << t;
-    total += count;
+    total += expect_equals_brute_force(h, m, scale, got, t);
+    if (::testing::Test::HasFailure()) return;
   }
   EXPECT_GT(total, 1000);
 }
@@ -129,6 +136,75 @@ TEST(Coverage, EqualsBruteForceOnFineDyadicVertices) {
   // 2^-12 of a sample: products stay exact in double, so the reference's arithmetic is exact too.
   compare_random_polygons(256, 4096, 1500, 3, false);
   compare_random_polygons(256, 4096, 1500, 4, true);
+}
+
+// Twice the signed area and the turn signs of a polygon, exactly (half-sample coordinates).
+bool snapped_convex(const std::vector<P2>& p) {
+  double area2 = 0;
+  int positive = 0, negative = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const P2 a = p[k], b = p[(k + 1) % p.size()], c = p[(k + 2) % p.size()];
+    area2 += a.x * b.y - b.x * a.y;
+    const double turn = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+    positive += turn > 0;
+    negative += turn < 0;
+  }
+  return area2 != 0 && (positive == 0 || negative == 0);
+}
+
+// Convex polygons that snapping to the half-sample grid (the formatter grid at N = 512) makes
+// non-convex: thin quadrilaterals whose long sides carry extra, nearly collinear vertices, and
+// slivers narrower than a grid step, whose vertices can cross (bow-ties) or swap (reversed).
+std::vector<std::vector<P2>> snap_to_non_convex(int m, int wanted, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<std::vector<P2>> out;
+  for (int t = 0; int(out.size()) < wanted && t < 100 * wanted; ++t) {
+    const double cx = 20 + (m - 40) * unit(rng), cy = 20 + (m - 40) * unit(rng);
+    const double angle = 2 * M_PI * unit(rng), length = 2 + 60 * unit(rng) * unit(rng);
+    const double width = 1.2 * unit(rng) * unit(rng), bulge = 0.2 * unit(rng);
+    const double ux = std::cos(angle), uy = std::sin(angle);
+    std::vector<P2> exact;
+    const int per_side = 1 + int(unit(rng) * 6);  // vertices per long side: up to 16 in all
+    for (int side = 0; side < 2; ++side)
+      for (int k = 0; k <= per_side; ++k) {
+        // Along the side, from one end to the other, bowed out a little (convex before snapping).
+        const double f = side == 0 ? double(k) / per_side : 1 - double(k) / per_side;
+        const double along = (f - 0.5) * length;
+        const double across = (side == 0 ? 1 : -1) * (width / 2 + bulge * f * (1 - f));
+        exact.push_back({cx + along * ux - across * uy, cy + along * uy + across * ux});
+      }
+    std::vector<P2> snapped;
+    for (const P2& p : exact) {
+      const P2 q{std::round(p.x * 2) / 2, std::round(p.y * 2) / 2};
+      if (snapped.empty() || q.x != snapped.back().x || q.y != snapped.back().y) snapped.push_back(q);
+    }
+    while (snapped.size() > 1 && snapped.back().x == snapped.front().x && snapped.back().y == snapped.front().y)
+      snapped.pop_back();
+    if (snapped.size() < 4 || snapped_convex(snapped) || int(snapped.size()) > kMaxScreenVertices) continue;
+    out.push_back(snapped);
+  }
+  return out;
+}
+
+TEST(Coverage, CrossingRuleOnSnapToNonConvexPolygons) {
+  const int m = 2048;  // N = 512
+  const auto polygons = snap_to_non_convex(m, 3000, 5);
+  ASSERT_EQ(polygons.size(), 3000u);
+  std::vector<char> got(std::size_t(m) * std::size_t(m), 0);
+  long total = 0, zero_area = 0;
+  for (std::size_t t = 0; t < polygons.size(); ++t) {
+    std::vector<P2> p = polygons[t];
+    if (t % 2) std::reverse(p.begin(), p.end());  // either winding
+    total += expect_equals_brute_force(p, m, 2, got, int(t));
+    double area2 = 0;
+    for (std::size_t k = 0; k < p.size(); ++k)
+      area2 += p[k].x * p[(k + 1) % p.size()].y - p[(k + 1) % p.size()].x * p[k].y;
+    zero_area += area2 == 0;
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(total, 10000);
+  EXPECT_GT(zero_area, 0);  // symmetric bow-ties: zero signed area, samples covered
 }
 
 TEST(Coverage, TieRuleIncludesLeftAndTopEdges) {
