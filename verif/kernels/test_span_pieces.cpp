@@ -1,0 +1,193 @@
+// Span pieces (hls/formatter/span_pieces.hpp) against an exact crossing-number count: on polygons
+// that snapping to the formatter grid makes non-convex, self-intersecting or reversed, and on wild
+// random polygons, every sample of the lattice is covered by exactly as many pieces as the crossing
+// rule says (0 or 1: the pieces are disjoint), at several rasters.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hls/formatter/span_pieces.hpp"
+#include "segment_test_support.hpp"
+
+namespace cig::hls::segtest {
+namespace {
+
+// Half-unit position of sample k on an N = 2^log2 raster (README: pixel p spans grid units
+// [u p - 1, u p - 1 + u), u = 4096 / N, its 4 samples at u p - 1 + (2 s + 1) u / 8).
+std::int64_t sample_half(int log2, std::int64_t k) {
+  const std::int64_t u = 4096 >> log2;
+  return k * (u / 2) + u / 4 - 2;
+}
+
+// The crossing rule on the sample perturbed to (x + e, y + e^2): an odd number of edges cross
+// the row right of it (half-open Y ranges; a crossing at x exactly lies left of x + e).
+bool odd_crossings(const IntPolygon& p, std::int64_t sx, std::int64_t sy) {
+  bool inside = false;
+  for (int k = 0; k < p.n; ++k) {
+    const int k1 = (k + 1) % p.n;
+    const std::int64_t ax = 2 * p.x[k], ay = 2 * p.y[k], bx = 2 * p.x[k1], by = 2 * p.y[k1];
+    if ((ay > sy) == (by > sy)) continue;
+    const i128 num = i128(ax - sx) * (by - ay) + i128(sy - ay) * (bx - ax);
+    if ((by > ay) ? num > 0 : num < 0) inside = !inside;
+  }
+  return inside;
+}
+
+// x of the polygon edge between vertices a and b at half-unit height y, compared with sx:
+// sign of x_edge(y) - sx.
+int edge_minus_x(const IntPolygon& p, int a, int b, std::int64_t sx, std::int64_t sy) {
+  std::int64_t xa = 2 * p.x[a], ya = 2 * p.y[a], xb = 2 * p.x[b], yb = 2 * p.y[b];
+  if (ya > yb) {
+    std::swap(xa, xb);
+    std::swap(ya, yb);
+  }
+  const i128 d = i128(xa - sx) * (yb - ya) + i128(sy - ya) * (xb - xa);  // (x_edge - sx) (yb - ya)
+  return d > 0 ? 1 : (d < 0 ? -1 : 0);
+}
+
+bool edge_holds_row(const IntPolygon& p, int a, int b, std::int64_t sy) {
+  const std::int64_t ya = 2 * p.y[a], yb = 2 * p.y[b];
+  return std::min(ya, yb) <= sy && sy < std::max(ya, yb);
+}
+
+// Every sample of the raster: pieces covering it (left boundary inclusive, right exclusive) against
+// the crossing rule. Returns the samples covered.
+long check_polygon(const IntPolygon& p, int log2, int t) {
+  auto pieces = std::make_unique<SpanPieces>();
+  split_into_span_pieces(fixed_input(p), log2, *pieces);
+  const int m = 4 << log2;
+  int x0 = 4095, x1 = 0, y0 = 4095, y1 = 0;
+  for (int k = 0; k < p.n; ++k) {
+    x0 = std::min(x0, p.x[k]), x1 = std::max(x1, p.x[k]);
+    y0 = std::min(y0, p.y[k]), y1 = std::max(y1, p.y[k]);
+  }
+  const int u = 4096 >> log2;
+  const int i0 = std::max(0, 4 * (x0 / u) - 4), i1 = std::min(m - 1, 4 * (x1 / u) + 8);
+  const int j0 = std::max(0, 4 * (y0 / u) - 4), j1 = std::min(m - 1, 4 * (y1 / u) + 8);
+  long covered = 0;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const std::int64_t sx = sample_half(log2, i), sy = sample_half(log2, j);
+      const bool want = odd_crossings(p, sx, sy);
+      int got = 0;
+      if (pieces->convex) {
+        got = ExactCoverage(p).covers(sx, sy) ? 1 : 0;
+      } else {
+        for (int k = 0; k < int(pieces->count.value()); ++k) {
+          const SpanPiece& pc = pieces->piece[k];
+          if (j < pc.row_first.value() || j > pc.row_last.value()) continue;
+          const int lt = int(pc.left_top.value()), lb = int(pc.left_bottom.value());
+          const int rt = int(pc.right_top.value()), rb = int(pc.right_bottom.value());
+          EXPECT_TRUE(edge_holds_row(p, lt, lb, sy) && edge_holds_row(p, rt, rb, sy))
+              << "polygon " << t << " piece " << k << " row " << j;
+          if (edge_minus_x(p, lt, lb, sx, sy) <= 0 && edge_minus_x(p, rt, rb, sx, sy) > 0) ++got;
+        }
+      }
+      if (got != (want ? 1 : 0)) {
+        ADD_FAILURE() << "polygon " << t << " at N = " << (1 << log2) << ", sample (" << i << ", " << j << "): " << got
+                      << " pieces, crossing rule " << want << " (convex " << pieces->convex << ", "
+                      << pieces->count.value() << " pieces)";
+        return covered;
+      }
+      covered += want;
+    }
+  return covered;
+}
+
+bool turns_one_way(const IntPolygon& p) {
+  int positive = 0, negative = 0;
+  for (int k = 0; k < p.n; ++k) {
+    const int a = k, b = (k + 1) % p.n, c = (k + 2) % p.n;
+    const std::int64_t t =
+        std::int64_t(p.x[b] - p.x[a]) * (p.y[c] - p.y[b]) - std::int64_t(p.y[b] - p.y[a]) * (p.x[c] - p.x[b]);
+    positive += t > 0;
+    negative += t < 0;
+  }
+  return shoelace2(p) != 0 && (positive == 0 || negative == 0);
+}
+
+// A thin convex polygon with extra, nearly collinear vertices on its long sides, snapped to whole
+// grid units (eq. 1's rounding); kept when the snap made it non-convex.
+bool snap_to_non_convex(Rng& rng, IntPolygon& p) {
+  auto unit = [&] { return double(rng() >> 11) * 0x1.0p-53; };
+  const double cx = 40 + 4000 * unit(), cy = 40 + 4000 * unit();
+  const double angle = 6.283185307179586 * unit(), length = 4 + 300 * unit() * unit();
+  const double width = 2.5 * unit() * unit(), bulge = 0.4 * unit();
+  const int per_side = 1 + int(unit() * 6);
+  p = IntPolygon();
+  for (int side = 0; side < 2; ++side)
+    for (int k = 0; k <= per_side; ++k) {
+      const double f = side == 0 ? double(k) / per_side : 1 - double(k) / per_side;
+      const double along = (f - 0.5) * length, across = (side == 0 ? 1 : -1) * (width / 2 + bulge * f * (1 - f));
+      const int x = int(std::lround(cx + along * std::cos(angle) - across * std::sin(angle)));
+      const int y = int(std::lround(cy + along * std::sin(angle) + across * std::cos(angle)));
+      if (p.n > 0 && x == p.x[p.n - 1] && y == p.y[p.n - 1]) continue;
+      p.x[p.n] = std::clamp(x, 0, 4095);
+      p.y[p.n] = std::clamp(y, 0, 4095);
+      ++p.n;
+    }
+  while (p.n > 1 && p.x[p.n - 1] == p.x[0] && p.y[p.n - 1] == p.y[0]) --p.n;
+  return p.n >= 4 && !turns_one_way(p);
+}
+
+TEST(SpanPieces, SnapToNonConvexEqualsCrossingRule) {
+  Rng rng(0x5A4);
+  long covered = 0, zero_area = 0;
+  int kept = 0;
+  for (int t = 0; kept < 600 && t < 100000; ++t) {
+    IntPolygon p;
+    if (!snap_to_non_convex(rng, p)) continue;
+    if (kept % 2) std::reverse(p.x, p.x + p.n), std::reverse(p.y, p.y + p.n);
+    zero_area += shoelace2(p) == 0;
+    for (int log2 = 6; log2 <= 10; log2 += 2) covered += check_polygon(p, log2, kept);
+    if (HasFailure()) return;
+    ++kept;
+  }
+  EXPECT_EQ(kept, 600);
+  EXPECT_GT(covered, 10000);
+  EXPECT_GT(zero_area, 0);  // bow-ties of zero signed area among them
+}
+
+// Random vertices in a small box: self-intersecting stars with many crossings (the worst case for
+// the number of pieces), and polygons folded onto themselves.
+TEST(SpanPieces, WildPolygonsEqualCrossingRule) {
+  Rng rng(0x3117);
+  long covered = 0;
+  int most = 0;
+  for (int t = 0; t < 400; ++t) {
+    IntPolygon p;
+    p.n = 3 + int(below(rng, 14));
+    const int box = t % 2 ? 40 : 600, x0 = int(below(rng, 4096 - box)), y0 = int(below(rng, 4096 - box));
+    for (int k = 0; k < p.n; ++k) {
+      p.x[k] = x0 + int(below(rng, box));
+      p.y[k] = y0 + int(below(rng, box));
+    }
+    for (int log2 = 4; log2 <= 8; log2 += 2) covered += check_polygon(p, log2, t);
+    auto pieces = std::make_unique<SpanPieces>();
+    split_into_span_pieces(fixed_input(p), 8, *pieces);
+    most = std::max(most, int(pieces->count.value()));
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(covered, 10000);
+  EXPECT_LE(most, kMaxSpanPieces);
+  EXPECT_GT(most, 20);  // stars with many crossings were among them
+}
+
+TEST(SpanPieces, ConvexPolygonsTakeTheConvexPath) {
+  Rng rng(0xC0);
+  for (int t = 0; t < 2000; ++t) {
+    const IntPolygon p = random_polygon(rng, Shape::kAny, t);
+    auto pieces = std::make_unique<SpanPieces>();
+    split_into_span_pieces(fixed_input(p), 9, *pieces);
+    if (shoelace2(p) != 0) { ASSERT_TRUE(pieces->convex) << "polygon " << t; }
+    check_polygon(p, 6, t);
+    if (HasFailure()) return;
+  }
+}
+
+}  // namespace
+}  // namespace cig::hls::segtest
