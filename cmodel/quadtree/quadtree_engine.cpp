@@ -104,6 +104,8 @@ class QuadPipeline {
     rep["polygons"] = frame.polygons.size();
     rep["polygons_degenerate"] = fe.degenerate;
     rep["polygons_split"] = fe.split;
+    rep["polygons_non_convex"] = fe.non_convex;  // snapped non-convex: drawn as span pieces
+    rep["span_pieces"] = fe.span_pieces;
     rep["pieces"] = pieces;
     rep["bbox_edges"] = fe.bbox_edges;
     rep["light_points"] = frame.light_points.size();

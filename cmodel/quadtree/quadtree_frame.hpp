@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <type_traits>
 #include <vector>
@@ -92,7 +93,29 @@ struct QuadFront<QuadDoubleArith> {
 
 struct FrontEndStats {
   long degenerate = 0, split = 0, bbox_edges = 0;
+  long non_convex = 0, span_pieces = 0;  // polygons snapping made non-convex, and their pieces
 };
+
+// A polygon that snapping made non-convex: its span pieces' level-0 windows. False when the
+// polygon is convex (the convex setup covers it).
+template <class P>
+bool span_piece_roots(const hls::QuadPrimitiveInput<P>& in, int raster_log2, hls::SpanPieces& pieces,
+                      std::vector<hls::QuadWindow<P>>& roots, FrontEndStats& st) {
+  hls::FormattedPrimitive positions;
+  hls::span_input_from_setup(in, positions);
+  hls::split_into_span_pieces(positions, raster_log2, pieces);
+  if (pieces.convex) return false;
+  ++st.non_convex;
+  hls::QuadWindow<P> root;
+  for (int k = 0; k < int(pieces.count.value()); ++k) {
+    bool ok = false;
+    hls::quadtree_setup_span_piece(in, pieces.piece[k], raster_log2, root, ok);
+    if (!ok) break;  // all vertices on one line: covers nothing
+    roots.push_back(root);
+    ++st.span_pieces;
+  }
+  return true;
+}
 
 // The pieces' level-0 windows of a frame, in priority order (front to back).
 template <class P>
@@ -101,8 +124,10 @@ std::vector<hls::QuadWindow<P>> front_end(const ScreenFrame& frame, int raster_l
   roots.reserve(frame.polygons.size());
   hls::QuadSetup<P> setup;
   hls::QuadPrimitiveInput<P> in;
+  const auto pieces = std::make_unique<hls::SpanPieces>();
   for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
     QuadFront<P>::setup_input(frame.polygons[pi], std::uint16_t(pi), in);
+    if (span_piece_roots(in, raster_log2, *pieces, roots, st)) continue;
     hls::quadtree_setup(in, raster_log2, setup);
     const int pieces = int(setup.pieces.value());
     if (pieces == 0) ++st.degenerate;
