@@ -17,6 +17,7 @@
 //
 // A convex polygon (every turn the same way, Y changing direction twice) is left to the engines'
 // convex path (count 0, convex true): its crossing-rule coverage is its edge functions' coverage.
+// So is a flat one (every vertex on one line), which covers nothing and is dropped as degenerate.
 //
 // Arithmetic: half units (2 X, 2 Y: 0..8190) and sample rows; the x of an edge at a row is the
 // rational (x_top dy + (y - y_top) dx) / dy, compared by cross-multiplication in 64-bit integers
@@ -114,6 +115,16 @@ inline bool span_polygon_is_convex(const int (&hx)[kMaxVertices], const int (&hy
   return y_turns <= 2;
 }
 
+// True when every vertex lies on one line: the polygon covers nothing, and the engines' convex
+// path drops it as degenerate.
+inline bool span_polygon_is_flat(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int m) {
+  for (int k = 2; k < kMaxVertices; ++k) {
+    if (k >= m) break;
+    if (std::int64_t(hx[1] - hx[0]) * (hy[k] - hy[0]) != std::int64_t(hy[1] - hy[0]) * (hx[k] - hx[0])) return false;
+  }
+  return true;
+}
+
 // The span pieces of one formatted polygon on the lattice of an N = 2^raster_log2 raster.
 template <class Q>
 void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, SpanPieces& out) {
@@ -138,7 +149,7 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     --m;
   }
   out.count = UInt<11>(0);
-  out.convex = m < 3 || span_polygon_is_convex(hx, hy, m);
+  out.convex = m < 3 || span_polygon_is_convex(hx, hy, m) || span_polygon_is_flat(hx, hy, m);
   if (out.convex) return;
 
   // Edges that cross at least one sample row.
