@@ -56,6 +56,11 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
     return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255)));
   }
   static void fog_table(typename P::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, false); }
+  // A polygon that snapping made non-convex: its span pieces (hls/formatter/span_pieces.hpp).
+  static bool split(const hls::FormattedPrimitive& f, int log2, hls::SpanPieces& pieces) {
+    hls::split_into_span_pieces(f, log2, pieces);
+    return !pieces.convex;
+  }
 };
 
 template <>
@@ -110,6 +115,8 @@ struct Front<DoubleSegmentArith> {
     t.start = fog.start;
     t.end = fog.end;
   }
+  // The twin keeps the formatter's unsnapped positions: a convex polygon stays convex.
+  static bool split(const hls::FormattedPrimitiveT<P>&, int, hls::SpanPieces&) { return false; }
 };
 
 // ---- The pipeline ----------------------------------------------------------------------------------
@@ -122,7 +129,8 @@ class SegmentPipeline {
         segment_memory_(std::make_unique<hls::SegmentMemory<P>>()),
         tables_(std::make_unique<hls::VideoTables<P>>()),
         line_(std::make_unique<hls::LineBuffer<P>>()),
-        segments_(std::make_unique<hls::Segment<P>[]>(hls::kMaxLines)) {}
+        segments_(std::make_unique<hls::Segment<P>[]>(hls::kMaxLines)),
+        span_pieces_(std::make_unique<hls::SpanPieces>()) {}
 
   explicit SegmentPipeline(bool seed_quadrilateral) : SegmentPipeline() { seed_quadrilateral_ = seed_quadrilateral; }
 
@@ -167,6 +175,7 @@ class SegmentPipeline {
     int bank = 0, threshold = 0;
     hls::OverloadCounts counts;
     long degenerate = 0, edges_stored = 0, protected_polygons = 0;
+    long non_convex = 0, span_pieces = 0;  // polygons snapping made non-convex, and their pieces
     long light_segments_field[2] = {0, 0};
     long light_segments = 0, polygon_segments = 0, dropped_overload = 0;
     long dropped_by_code[hls::kAreaCodes] = {};
@@ -181,6 +190,14 @@ class SegmentPipeline {
     return F::light_segments(fl, log2, light_out_);
   }
 
+  // A polygon (or a span piece of one) into the frame memory, its segments counted.
+  void store(const hls::PolygonEdges<P>& edges, FrameStats& st) {
+    if (!hls::frame_memory_write(edges, *frame_memory_)) return;
+    hls::overload_count(edges.h, st.counts);
+    st.edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
+    st.protected_polygons += edges.h.protect ? 1 : 0;
+  }
+
   // Formatter and edge generator: polygons into the frame memory, segments counted per area code,
   // and the overload threshold.
   void format_and_count(const ScreenFrame& frame, int log2, FrameStats& st) {
@@ -191,15 +208,22 @@ class SegmentPipeline {
     for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
       const auto fp = F::polygon(frame.polygons[pi], std::uint16_t(pi));
       for (int c = 0; c < 3; ++c) tables_->polygon_colour[pi][c] = fp.colour[c];
+      if (F::split(fp, log2, *span_pieces_)) {
+        ++st.non_convex;
+        st.span_pieces += long(span_pieces_->count.value());
+        if (span_pieces_->count.value() == 0) ++st.degenerate;  // no sample row crosses it
+        for (int k = 0; k < int(span_pieces_->count.value()); ++k) {
+          hls::generate_span_piece_edges<P>(fp, span_pieces_->piece[k], log2, edges);
+          store(edges, st);
+        }
+        continue;
+      }
       hls::generate_edges<P>(fp, log2, edges);
       if (!edges.valid) {
         ++st.degenerate;
         continue;
       }
-      if (!hls::frame_memory_write(edges, *frame_memory_)) continue;
-      hls::overload_count(edges.h, st.counts);
-      st.edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
-      st.protected_polygons += edges.h.protect ? 1 : 0;
+      store(edges, st);
     }
     // Light points are never dropped: their segments (coding table) count with the protected
     // polygons' in code 0, so that the threshold leaves room for them in both banks (SPEC D: the
@@ -282,6 +306,8 @@ class SegmentPipeline {
     const long lost = long(segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value());
     rep["polygons"] = frame.polygons.size();
     rep["polygons_degenerate"] = st.degenerate;
+    rep["polygons_non_convex"] = st.non_convex;  // snapped non-convex: stored as span pieces,
+    rep["span_pieces"] = st.span_pieces;         // one frame-memory entry each
     rep["polygons_protected"] = st.protected_polygons;
     rep["edges"] = st.edges_stored;
     rep["frame_memory"] = {{"bank_words", hls::kFrameBankWords},
@@ -325,6 +351,7 @@ class SegmentPipeline {
   std::unique_ptr<hls::VideoTables<P>> tables_;
   std::unique_ptr<hls::LineBuffer<P>> line_;
   std::unique_ptr<hls::Segment<P>[]> segments_;
+  std::unique_ptr<hls::SpanPieces> span_pieces_;  // of the polygon being formatted
   bool seed_quadrilateral_ = false;
 };
 

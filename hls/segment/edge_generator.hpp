@@ -9,6 +9,7 @@
 // degenerate and dropped whole.
 #pragma once
 
+#include "hls/formatter/span_pieces.hpp"
 #include "hls/segment/segment_arith.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
@@ -43,14 +44,12 @@ void add_chain_edge(const FormattedVertexT<Q>& a, const FormattedVertexT<Q>& b, 
 
 }  // namespace detail
 
-// raster_log2 = n for an N = 2^n raster (kMinRasterLog2..kMaxRasterLog2).
+namespace detail {
+
+// The header fields that come from the whole polygon: identity, colour, flags, eq. 5-6's area and
+// the area code; no rows, no edges yet.
 template <class P, class Q>
-void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEdges<P>& out) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int rows = kRowsPerLine << raster_log2;
-  const int n = int(in.n.value());
-  PolygonHeader<P>& h = out.h;
-  out.valid = false;
+typename P::Area polygon_header(const FormattedPrimitiveT<Q>& in, PolygonHeader<P>& h) {
   h.id = in.id;
   for (int c = 0; c < 3; ++c) h.colour[c] = in.colour[c];
   h.opaque = in.opaque;
@@ -61,21 +60,46 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
   h.row_last = -1;
   h.segments_even = UInt<11>(0);
   h.segments_odd = UInt<11>(0);
-
-  // Eq. 5-6 and the Y extremes in one pass over the vertices.
+  const int n = int(in.n.value());
   typename P::Area twice = typename P::Area();
-  int top = 0, bottom = 0;
   for (int j = 0; j < kMaxVertices; ++j) {
     if (j >= n) break;
     const int j1 = j + 1 == n ? 0 : j + 1;
     twice = P::area_sub(twice, P::area_term(in.v[j].x, in.v[j].y, in.v[j1].x, in.v[j1].y));
-    if (in.v[j].y < in.v[top].y) top = j;
-    if (in.v[bottom].y < in.v[j].y) bottom = j;
   }
   h.twice_area = twice;
   h.area_code = UInt<4>(in.protect ? 0 : P::area_code(twice));
-  if (n < 3 || P::is_zero(twice)) return;
+  return twice;
+}
 
+// Raster lines crossed per field: even lines go to one segment-memory bank, odd lines to the other.
+template <class P>
+void count_lines(PolygonHeader<P>& h) {
+  const int line_first = h.row_first >> 2, line_last = h.row_last >> 2;
+  const int lines = line_last - line_first + 1;
+  const int even = (lines + ((line_first & 1) == 0 ? 1 : 0)) >> 1;
+  h.segments_even = UInt<11>(even);
+  h.segments_odd = UInt<11>(lines - even);
+}
+
+}  // namespace detail
+
+// raster_log2 = n for an N = 2^n raster (kMinRasterLog2..kMaxRasterLog2).
+template <class P, class Q>
+void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEdges<P>& out) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  const int rows = kRowsPerLine << raster_log2;
+  const int n = int(in.n.value());
+  PolygonHeader<P>& h = out.h;
+  out.valid = false;
+  const typename P::Area twice = detail::polygon_header(in, h);
+  int top = 0, bottom = 0;  // the Y extremes
+  for (int j = 0; j < kMaxVertices; ++j) {
+    if (j >= n) break;
+    if (in.v[j].y < in.v[top].y) top = j;
+    if (in.v[bottom].y < in.v[j].y) bottom = j;
+  }
+  if (n < 3 || P::is_zero(twice)) return;
   // eq. 6's area is -(1/2) sum(x_j y_{j+1} - x_{j+1} y_j); with Y pointing down a positive value
   // means the vertices run counter-clockwise on screen, so walking forward from the top vertex
   // follows the left side.
@@ -104,13 +128,39 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
   const int lc = int(h.left_count.value());
   h.row_first = out.left[0].row_first;
   h.row_last = out.left[lc - 1].row_last;
-  const int line_first = h.row_first >> 2, line_last = h.row_last >> 2;
-  // Lines crossed per field: even lines go to one segment-memory bank, odd lines to the other.
-  const int lines = line_last - line_first + 1;
-  const int even = (lines + ((line_first & 1) == 0 ? 1 : 0)) >> 1;
-  h.segments_even = UInt<11>(even);
-  h.segments_odd = UInt<11>(lines - even);
+  detail::count_lines(h);
   out.valid = true;
+}
+
+// One span piece of a polygon that snapping made non-convex (hls/formatter/span_pieces.hpp): the
+// polygon's header with the piece's rows, and its left and right polygon edge as one-edge chains
+// over those rows (the first crossing at the piece's first row, as the preprocessor computes it).
+template <class P, class Q>
+void generate_span_piece_edges(const FormattedPrimitiveT<Q>& in, const SpanPiece& piece, int raster_log2,
+                               PolygonEdges<P>& out) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  const int rows = kRowsPerLine << raster_log2;
+  PolygonHeader<P>& h = out.h;
+  detail::polygon_header(in, h);
+  const int first = int(piece.row_first.value()), last = int(piece.row_last.value());
+  const int ends[2][2] = {{int(piece.left_top.value()), int(piece.left_bottom.value())},
+                          {int(piece.right_top.value()), int(piece.right_bottom.value())}};
+  for (int side = 0; side < 2; ++side) {
+    Edge<P>* chain = side == 0 ? out.left : out.right;
+    UInt<5>& count = side == 0 ? h.left_count : h.right_count;
+    const FormattedVertexT<Q>& a = in.v[ends[side][0]];
+    const FormattedVertexT<Q>& b = in.v[ends[side][1]];
+    detail::add_chain_edge<P>(a, b, g, rows, chain, count);
+    if (count.value() == 0) continue;
+    Edge<P>& e = chain[0];
+    e.row_first = first;
+    e.row_last = last;
+    e.x_first = P::crossing(g, a.x, a.y, b.x, b.y, first);
+  }
+  out.valid = h.left_count.value() == 1 && h.right_count.value() == 1;
+  h.row_first = first;
+  h.row_last = last;
+  detail::count_lines(h);
 }
 
 // Top function (HLS): the default format.

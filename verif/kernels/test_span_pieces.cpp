@@ -3,6 +3,7 @@
 // random polygons, every sample of the lattice is covered by exactly as many pieces as the crossing
 // rule says (0 or 1: the pieces are disjoint), at several rasters.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -13,6 +14,8 @@
 #include "hls/formatter/span_pieces.hpp"
 #include "hls/quadtree/pe.hpp"
 #include "hls/quadtree/setup.hpp"
+#include "hls/segment/edge_generator.hpp"
+#include "hls/segment/segment_generator.hpp"
 #include "segment_test_support.hpp"
 
 namespace cig::hls::segtest {
@@ -266,6 +269,71 @@ TEST(SpanPieces, QuadtreeCoversTheCrossingRule) {
         ASSERT_EQ(got[std::size_t(j) * std::size_t(m) + std::size_t(i)], want ? 1 : 0)
             << "polygon " << polygons << " (" << (wild ? "wild" : "snapped") << ", " << pieces
             << " pieces) at N = " << (1 << log2) << ", sample (" << i << ", " << j << ")";
+        covered += want;
+      }
+    ++polygons;
+  }
+  EXPECT_EQ(polygons, 300);
+  EXPECT_GT(covered, 2000);
+}
+
+// ---- The segment processor on span pieces ---------------------------------------------------------
+
+using SP = DefaultSegmentArith;
+
+// Samples covered by the edge generator's span pieces and the segment generator's segments (their
+// X at each row to the first column at or after it, as the video channel draws), counted per
+// sample: 4N x 4N.
+std::vector<int> segment_samples(const IntPolygon& p, int log2) {
+  const int m = 4 << log2;
+  std::vector<int> got(std::size_t(m) * std::size_t(m), 0);
+  auto pieces = std::make_unique<SpanPieces>();
+  const FormattedPrimitive f = fixed_input(p);
+  split_into_span_pieces(f, log2, *pieces);
+  const LatticeGeometry g = LatticeGeometry::for_raster(log2);
+  auto edges = std::make_unique<PolygonEdges<SP>>();
+  auto segments = std::make_unique<std::array<Segment<SP>, kMaxLines>>();
+  auto& out = *reinterpret_cast<Segment<SP>(*)[kMaxLines]>(segments->data());
+  for (int k = 0; k < int(pieces->count.value()); ++k) {
+    generate_span_piece_edges<SP>(f, pieces->piece[k], log2, *edges);
+    const int count = generate_segments<SP>(*edges, log2, UInt<3>(0), false, out);
+    for (int t = 0; t < count; ++t) {
+      const Segment<SP>& s = out[t];
+      for (int r = int(s.row_first.value()); r <= int(s.row_last.value()); ++r) {
+        const int row = 4 * int(s.line.value()) + r;
+        const int i0 = std::max(0, SP::first_column_at_or_after(g, s.xl[r]));
+        const int i1 = std::min(m - 1, SP::first_column_at_or_after(g, s.xr[r]) - 1);
+        for (int i = i0; i <= i1; ++i) ++got[std::size_t(row) * std::size_t(m) + std::size_t(i)];
+      }
+    }
+  }
+  return got;
+}
+
+TEST(SpanPieces, SegmentProcessorCoversTheCrossingRule) {
+  Rng rng(0x5E6);
+  long covered = 0;
+  int polygons = 0;
+  for (int t = 0; polygons < 300 && t < 100000; ++t) {
+    IntPolygon p;
+    const bool wild = t % 3 == 0;
+    if (wild) {
+      p.n = 3 + int(below(rng, 14));
+      const int x0 = int(below(rng, 3900)), y0 = int(below(rng, 3900));
+      for (int k = 0; k < p.n; ++k) p.x[k] = x0 + int(below(rng, 150)), p.y[k] = y0 + int(below(rng, 150));
+    } else if (!snap_to_non_convex(rng, p)) {
+      continue;
+    }
+    if (turns_one_way(p)) continue;  // convex: the convex edge generator's tests cover it
+    const int log2 = 5 + polygons % 4;
+    const std::vector<int> got = segment_samples(p, log2);
+    const int m = 4 << log2;
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const bool want = odd_crossings(p, sample_half(log2, i), sample_half(log2, j));
+        ASSERT_EQ(got[std::size_t(j) * std::size_t(m) + std::size_t(i)], want ? 1 : 0)
+            << "polygon " << polygons << " (" << (wild ? "wild" : "snapped") << ") at N = " << (1 << log2)
+            << ", sample (" << i << ", " << j << ")";
         covered += want;
       }
     ++polygons;

@@ -27,6 +27,7 @@
 #include "engine/engine.hpp"
 #include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
+#include "hls/formatter/span_pieces.hpp"
 #include "hls/segment/frame_memory.hpp"
 #include "hls/segment/overload.hpp"
 #include "hls/segment/records.hpp"
@@ -141,6 +142,22 @@ struct PolygonCount {
   long lines[2] = {0, 0};  // raster lines crossed, even / odd (one segment each)
   int edges = 0;           // edges some sample row crosses: one frame-memory word each
   int words() const { return 1 + edges; }
+  // A polygon that snapping made non-convex is stored as its span pieces (hls/formatter/
+  // span_pieces.hpp, whose exactness verif/kernels/test_span_pieces.cpp proves): one frame-memory
+  // entry each (header and two edges), with the polygon's code. Empty for a convex polygon, which
+  // is one entry described by the fields above.
+  struct Entry {
+    long first_line = 0, last_line = -1;
+    long lines[2] = {0, 0};
+    int edges = 0;
+    int words() const { return 1 + edges; }
+  };
+  std::vector<Entry> pieces;
+  std::vector<Entry> entries() const {
+    if (!pieces.empty()) return pieces;
+    if (!valid) return {};
+    return {Entry{first_line, last_line, {lines[0], lines[1]}, edges}};
+  }
 };
 
 // Area code (hls/segment/README.md): clamp(20 - floor(log2(area)), 1, 15), area = twice / 2, so
@@ -149,6 +166,29 @@ inline int area_code(long twice) {
   int msb = 0;
   while ((twice >> (msb + 1)) != 0) ++msb;
   return std::clamp(20 - (msb - 1), 1, 15);
+}
+
+// The span pieces of a polygon that snapping made non-convex, as entries; false for a convex one.
+inline bool add_span_pieces(PolygonCount& c, const Lattice& g) {
+  hls::FormattedPrimitive f;
+  f.n = hls::UInt<5>(c.v.size());
+  for (std::size_t k = 0; k < c.v.size(); ++k) {
+    f.v[k].x = hls::UInt<12>(std::uint64_t(c.v[k].x));
+    f.v[k].y = hls::UInt<12>(std::uint64_t(c.v[k].y));
+  }
+  auto pieces = std::make_unique<hls::SpanPieces>();
+  hls::split_into_span_pieces(f, hls::raster_log2_of(g.n), *pieces);
+  if (pieces->convex) return false;
+  for (int k = 0; k < int(pieces->count.value()); ++k) {
+    PolygonCount::Entry e;
+    e.first_line = long(pieces->piece[k].row_first.value()) / 4;
+    e.last_line = long(pieces->piece[k].row_last.value()) / 4;
+    for (long line = e.first_line; line <= e.last_line; ++line) ++e.lines[line & 1];
+    e.edges = 2;
+    c.pieces.push_back(e);
+  }
+  c.valid = !c.pieces.empty();
+  return true;
 }
 
 inline PolygonCount count_polygon(const ScreenPolygon& p, const Lattice& g) {
@@ -164,6 +204,7 @@ inline PolygonCount count_polygon(const ScreenPolygon& p, const Lattice& g) {
   }
   c.twice_area = twice < 0 ? -twice : twice;
   c.code = p.protect ? 0 : area_code(std::max(1L, c.twice_area));
+  if (add_span_pieces(c, g)) return c;
   const auto rows = g.in(2 * ymin, 2 * ymax);
   c.valid = c.twice_area != 0 && rows.first <= rows.second;
   if (!c.valid) return c;
@@ -193,7 +234,8 @@ inline std::vector<long> light_segment_lines(const ScreenLightPoint& l, const La
 struct FrameCount {
   int n = 512;
   std::vector<PolygonCount> polygons;
-  std::vector<char> written;  // stored in the frame memory (first fit, in list order)
+  std::vector<char> written;                       // stored in the frame memory (first fit, in list order): some entry
+  std::vector<std::vector<char>> written_entries;  // per polygon, per entry (PolygonCount::entries)
   long degenerate = 0, written_count = 0, overflowed = 0, words = 0, edges = 0, protected_written = 0;
   long segments[2][kAreaCodes] = {};  // written polygons per field and code; lights in code 0
   long light_segments[2] = {0, 0};
@@ -234,20 +276,22 @@ inline FrameCount count_frame(const ScreenFrame& frame) {
   for (const auto& p : frame.polygons) {
     fc.polygons.push_back(count_polygon(p, g));
     const PolygonCount& c = fc.polygons.back();
-    bool written = false;
-    if (!c.valid) {
-      ++fc.degenerate;
-    } else if (fc.words + c.words() > kFrameBankWords) {
-      ++fc.overflowed;
-    } else {
-      written = true;
-      fc.words += c.words();
+    if (!c.valid) ++fc.degenerate;
+    std::vector<char> written;  // per entry (frame-memory first fit, in list order)
+    for (const PolygonCount::Entry& e : c.entries()) {
+      written.push_back(fc.words + e.words() <= kFrameBankWords);
+      if (!written.back()) {
+        ++fc.overflowed;
+        continue;
+      }
+      fc.words += e.words();
       ++fc.written_count;
-      fc.edges += c.edges;
+      fc.edges += e.edges;
       fc.protected_written += p.protect ? 1 : 0;
-      for (int f = 0; f < 2; ++f) fc.segments[f][c.code] += c.lines[f];
+      for (int f = 0; f < 2; ++f) fc.segments[f][c.code] += e.lines[f];
     }
-    fc.written.push_back(written);
+    fc.written_entries.push_back(written);
+    fc.written.push_back(std::count(written.begin(), written.end(), 1) > 0);
   }
   for (const auto& l : frame.light_points)
     for (long line : light_segment_lines(l, g)) {
@@ -263,19 +307,21 @@ inline FrameCount count_frame(const ScreenFrame& frame) {
     }
   for (std::size_t i = 0; i < fc.polygons.size(); ++i) {
     const PolygonCount& c = fc.polygons[i];
-    if (!fc.written[i]) continue;
-    if (c.code > fc.threshold) {
-      ++fc.dropped_by_code[c.code];
-      ++fc.dropped;
-      continue;
+    const auto entries = c.entries();
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      if (!fc.written_entries[i][k]) continue;
+      if (c.code > fc.threshold) {
+        ++fc.dropped_by_code[c.code];
+        ++fc.dropped;
+        continue;
+      }
+      fc.polygon_segments += entries[k].lines[0] + entries[k].lines[1];
+      for (int f = 0; f < 2; ++f) fc.kept[f] += entries[k].lines[f];
+      for (long line = entries[k].first_line; line <= entries[k].last_line; ++line) ++per_line[std::size_t(line)];
     }
-    fc.polygon_segments += c.lines[0] + c.lines[1];
-    for (long line = c.first_line; line <= c.last_line; ++line) ++per_line[std::size_t(line)];
   }
   for (int f = 0; f < 2; ++f) {
-    fc.kept[f] = fc.light_segments[f];
-    for (std::size_t i = 0; i < fc.polygons.size(); ++i)
-      if (fc.written[i] && fc.polygons[i].code <= fc.threshold) fc.kept[f] += fc.polygons[i].lines[f];
+    fc.kept[f] += fc.light_segments[f];
     fc.stored[f] = std::min(fc.kept[f], kSegmentBankWords);
     fc.dropped_memory_full += fc.kept[f] - fc.stored[f];
   }
@@ -301,8 +347,11 @@ inline void expect_report_self_consistent(const nlohmann::ordered_json& rep, int
   EXPECT_EQ(num(ov.at("bank_capacity")), kSegmentBankWords);
   EXPECT_EQ(num(fm.at("bank_words")), kFrameBankWords);
   EXPECT_LE(num(fm.at("words_used")), kFrameBankWords);
+  // The frame memory counts entries: a polygon snapping made non-convex is its span pieces.
+  const long pieces_extra =
+      rep.contains("span_pieces") ? num(rep.at("span_pieces")) - num(rep.at("polygons_non_convex")) : 0;
   EXPECT_EQ(num(fm.at("polygons_written")) + num(fm.at("polygons_overflowed")) + num(rep.at("polygons_degenerate")),
-            num(rep.at("polygons")));
+            num(rep.at("polygons")) + pieces_extra);
   long sum[2] = {0, 0}, kept = 0, dropped = 0, all = 0;
   for (int c = 0; c < kAreaCodes; ++c) {
     const auto& pc = ov.at("per_area_code").at(std::size_t(c));
