@@ -23,6 +23,7 @@
 #include "hls/pixel/light_coding.hpp"
 #include "hls/quadtree/pixel_processor.hpp"
 #include "hls/quadtree/setup.hpp"
+#include "hls/quadtree/span_setup.hpp"
 #include "image/raster_image.hpp"
 #include "quadtree/arch_model.hpp"
 #include "quadtree/quadtree_double_arith.hpp"

@@ -15,6 +15,7 @@
 #include "hls/segment/frame_memory.hpp"
 #include "hls/segment/light_segments.hpp"
 #include "hls/segment/segment_generator.hpp"
+#include "hls/segment/span_piece_edges.hpp"
 #include "hls/segment/video_channel.hpp"
 #include "segment/double_arith.hpp"
 

@@ -25,8 +25,6 @@
 // 16 x 15 / 2 crossing rows, so at most kMaxSpanEvents slab bounds and 8 spans per slab.
 #pragma once
 
-// hls-subset-helper: the piece split both raster engines' setups share.
-
 #include <cstdint>
 
 #include "hls/formatter/records.hpp"
@@ -253,6 +251,11 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     above_count = here_count;
   }
   out.count = UInt<11>(count);
+}
+
+// Top function (HLS): the split of one formatted polygon, shared by both raster engines' setups.
+inline void span_pieces_top(const FormattedPrimitive& in, UInt<4> raster_log2, SpanPieces& out) {
+  split_into_span_pieces(in, int(raster_log2.value()), out);
 }
 
 CIG_HLS_END_NAMESPACE

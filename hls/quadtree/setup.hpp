@@ -29,13 +29,10 @@
 //
 // Pieces. A polygon of more than kQuadMaxEdges vertices is split into a fan of pieces from vertex
 // 0 (8 + 7 + 3 more vertices), sharing diagonals: exact and watertight by the tie rule. A polygon
-// that snapping made non-convex is set up span piece by span piece (hls/formatter/span_pieces.hpp,
-// quadtree_setup_span_piece): each piece is its left and right polygon edge and its first and last
-// sample row, four exact edge lines, with the parameter planes of the whole polygon.
+// that snapping made non-convex is set up span piece by span piece instead (span_setup.hpp).
 #pragma once
 
 #include "hls/formatter/records.hpp"
-#include "hls/formatter/span_pieces.hpp"
 #include "hls/quadtree/quadtree_arith.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
@@ -263,71 +260,6 @@ void quadtree_setup(const QuadPrimitiveInput<P>& in, int raster_log2, QuadSetup<
     first += len - 2;
   }
   out.pieces = UInt<2>(count);
-}
-
-// The positions of a setup input as the formatter's output (what the span-piece split reads).
-template <class P>
-void span_input_from_setup(const QuadPrimitiveInput<P>& in, FormattedPrimitive& f) {
-  f.n = in.n;
-  for (int k = 0; k < kMaxVertices; ++k) {
-    f.v[k].x = in.v[k].x;
-    f.v[k].y = in.v[k].y;
-  }
-}
-
-// Setup of one span piece of a polygon that snapping made non-convex: edges 0 and 1 are the left
-// and right polygon edges (the left one owns its ties, the right one does not: the crossing rule's
-// span [x_left, x_right)), edges 2 and 3 the piece's first and last sample row; the parameter
-// planes are the polygon's, fitted on its fan triangle (0, k, k + 1) of largest area (every piece
-// of the polygon gets the same planes). ok is false when every fan triangle is degenerate (the
-// vertices on one line: the polygon covers nothing).
-template <class P>
-void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece& piece, int raster_log2,
-                               QuadWindow<P>& root, bool& ok) {
-  const int n = int(in.n.value());
-  int hx[kMaxVertices], hy[kMaxVertices];
-  int e_min = 255, best = -1;
-  std::int64_t best_area = 0;
-  for (int k = 0; k < kMaxVertices; ++k) {
-    hx[k] = 2 * int(in.v[k].x.value());
-    hy[k] = 2 * int(in.v[k].y.value());
-  }
-  for (int k = 0; k < kMaxVertices; ++k) {
-    if (k >= n) break;
-    const int e = P::depth_exponent(in.v[k].z);
-    if (e < e_min) e_min = e;
-    if (k < 1 || k + 1 >= n) continue;
-    std::int64_t a =
-        std::int64_t(hx[k] - hx[0]) * (hy[k + 1] - hy[0]) - std::int64_t(hy[k] - hy[0]) * (hx[k + 1] - hx[0]);
-    if (a < 0) a = -a;
-    if (a > best_area) {
-      best_area = a;
-      best = k;
-    }
-  }
-  ok = best > 0;
-  if (!ok) return;
-  int idx[kQuadMaxEdges] = {0, best, best + 1, 0, 0, 0, 0, 0};
-  UInt<3> bbox;
-  quad_detail::setup_piece(in, hx, hy, idx, 3, raster_log2, e_min, root, bbox, ok);
-  if (!ok) return;
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int lt = int(piece.left_top.value()), lb = int(piece.left_bottom.value());
-  const int rt = int(piece.right_top.value()), rb = int(piece.right_bottom.value());
-  QuadPolygon<P>& poly = root.poly;
-  Int<29> c[kQuadMaxEdges];
-  quad_detail::edge_line(hx[lt], hy[lt], hx[lb], hy[lb], -1, g.log2_half_spacing, g.offset_half, poly.a[0], poly.b[0],
-                         c[0]);
-  quad_detail::edge_line(hx[rt], hy[rt], hx[rb], hy[rb], 1, g.log2_half_spacing, g.offset_half, poly.a[1], poly.b[1],
-                         c[1]);
-  for (int k = 2; k < kQuadMaxEdges; ++k) {
-    poly.a[k] = EdgeGradient(0);
-    poly.b[k] = EdgeGradient(k == 2 ? 1 : (k == 3 ? -1 : 0));
-    c[k] = Int<29>(k == 2 ? -int(piece.row_first.value()) : (k == 3 ? int(piece.row_last.value()) : 0));
-  }
-  for (int k = 0; k < kQuadMaxEdges; ++k)
-    root.d[k] = quad_detail::root_coverage(poly.a[k], poly.b[k], c[k], raster_log2);
-  poly.edge_count = UInt<4>(4);
 }
 
 // The setup input of the bit-accurate policies: the formatter's output as it is.

@@ -9,7 +9,6 @@
 // degenerate and dropped whole.
 #pragma once
 
-#include "hls/formatter/span_pieces.hpp"
 #include "hls/segment/segment_arith.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
@@ -130,37 +129,6 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
   h.row_last = out.left[lc - 1].row_last;
   detail::count_lines(h);
   out.valid = true;
-}
-
-// One span piece of a polygon that snapping made non-convex (hls/formatter/span_pieces.hpp): the
-// polygon's header with the piece's rows, and its left and right polygon edge as one-edge chains
-// over those rows (the first crossing at the piece's first row, as the preprocessor computes it).
-template <class P, class Q>
-void generate_span_piece_edges(const FormattedPrimitiveT<Q>& in, const SpanPiece& piece, int raster_log2,
-                               PolygonEdges<P>& out) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int rows = kRowsPerLine << raster_log2;
-  PolygonHeader<P>& h = out.h;
-  detail::polygon_header(in, h);
-  const int first = int(piece.row_first.value()), last = int(piece.row_last.value());
-  const int ends[2][2] = {{int(piece.left_top.value()), int(piece.left_bottom.value())},
-                          {int(piece.right_top.value()), int(piece.right_bottom.value())}};
-  for (int side = 0; side < 2; ++side) {
-    Edge<P>* chain = side == 0 ? out.left : out.right;
-    UInt<5>& count = side == 0 ? h.left_count : h.right_count;
-    const FormattedVertexT<Q>& a = in.v[ends[side][0]];
-    const FormattedVertexT<Q>& b = in.v[ends[side][1]];
-    detail::add_chain_edge<P>(a, b, g, rows, chain, count);
-    if (count.value() == 0) continue;
-    Edge<P>& e = chain[0];
-    e.row_first = first;
-    e.row_last = last;
-    e.x_first = P::crossing(g, a.x, a.y, b.x, b.y, first);
-  }
-  out.valid = h.left_count.value() == 1 && h.right_count.value() == 1;
-  h.row_first = first;
-  h.row_last = last;
-  detail::count_lines(h);
 }
 
 // Top function (HLS): the default format.

@@ -27,10 +27,12 @@
 #include "hls/quadtree/mask_memory.hpp"
 #include "hls/quadtree/pe.hpp"
 #include "hls/quadtree/setup.hpp"
+#include "hls/quadtree/span_setup.hpp"
 #include "hls/segment/edge_generator.hpp"
 #include "hls/segment/light_segments.hpp"
 #include "hls/segment/overload.hpp"
 #include "hls/segment/segment_generator.hpp"
+#include "hls/segment/span_piece_edges.hpp"
 #include "hls/segment/video_channel.hpp"
 #include "hls/segment/y_sorter.hpp"
 #include "tb/edge_generator_top.hpp"
@@ -42,7 +44,10 @@
 #include "tb/quadtree_pe_top.hpp"
 #include "tb/quadtree_pixel_top.hpp"
 #include "tb/quadtree_setup_top.hpp"
+#include "tb/quadtree_span_setup_top.hpp"
 #include "tb/segment_generator_top.hpp"
+#include "tb/span_piece_edges_top.hpp"
+#include "tb/span_pieces_top.hpp"
 #include "tb/video_channel_top.hpp"
 #include "tb/y_sorter_top.hpp"
 
@@ -441,6 +446,89 @@ void write_quadtree_pixel(const std::string& dir, const Sources& s, Rng& rng) {
   }
 }
 
+// ---- Span pieces (polygons that snapping made non-convex) ------------------------------------------
+// Formatted polygons the snap bent: thin polygons with nearly collinear vertices rounded to the
+// grid (reflex vertices, bow-ties), and random stars (many crossings); attributes from the sources.
+std::vector<hls::FormattedPrimitive> bent_polygons(const Sources& s, Rng& rng) {
+  std::vector<hls::FormattedPrimitive> out;
+  auto pieces = std::make_unique<hls::SpanPieces>();
+  for (int t = 0; out.size() < 40 && t < 20000; ++t) {
+    hls::FormattedPrimitive f = s.polygons[std::size_t(t) % s.polygons.size()];
+    const bool star = t % 4 == 0;
+    const int n = star ? 3 + rng.below(14) : 4 + 2 * rng.below(7);
+    const double cx = rng.uniform(100, 3900), cy = rng.uniform(100, 3900), angle = rng.uniform(0, 6.283185307179586);
+    const double length = rng.uniform(8, 300), width = rng.uniform(0, 2.5), box = rng.uniform(20, 200);
+    f.n = hls::UInt<5>(n);
+    for (int k = 0; k < n; ++k) {
+      double x = cx + rng.uniform(-box, box), y = cy + rng.uniform(-box, box);
+      if (!star) {  // along a thin quadrilateral's two long sides, nearly collinear
+        const int half = n / 2, side = k < half ? 0 : 1, j = side == 0 ? k : n - 1 - k;
+        const double along = (double(j) / (half - 1) - 0.5) * length, across = (side ? -0.5 : 0.5) * width;
+        x = cx + along * std::cos(angle) - across * std::sin(angle) + rng.uniform(-0.4, 0.4);
+        y = cy + along * std::sin(angle) + across * std::cos(angle) + rng.uniform(-0.4, 0.4);
+      }
+      f.v[k].x = hls::UInt<12>(std::uint64_t(std::lround(std::clamp(x, 0.0, 4095.0))));
+      f.v[k].y = hls::UInt<12>(std::uint64_t(std::lround(std::clamp(y, 0.0, 4095.0))));
+    }
+    hls::split_into_span_pieces(f, 9, *pieces);
+    if (!pieces->convex && pieces->count.value() > 0) out.push_back(f);
+  }
+  return out;
+}
+
+void write_span_pieces(const std::string& dir, const std::vector<hls::FormattedPrimitive>& bent, const Sources& s) {
+  VectorFile<SpanPiecesTopCase> file(
+      dir, "polygons the snap bent (thin ones, stars) at rasters 64, 512, 1024, and convex ones");
+  auto in = std::make_unique<SpanPiecesTopCase::Input>();
+  for (int log2 : {6, 9, 10})
+    for (const auto& f : bent) {
+      in->in = f;
+      in->raster_log2 = hls::UInt<4>(log2);
+      file.add(*in);
+    }
+  for (std::size_t k = 0; k < s.polygons.size(); k += 8) {
+    in->in = s.polygons[k];
+    in->raster_log2 = hls::UInt<4>(9);
+    file.add(*in);
+  }
+}
+
+// Every piece of a bent polygon at one raster, with the polygon: f(polygon, piece).
+template <class F>
+void for_each_piece(const std::vector<hls::FormattedPrimitive>& bent, int log2, std::size_t every, F&& f) {
+  auto pieces = std::make_unique<hls::SpanPieces>();
+  std::size_t n = 0;
+  for (const auto& poly : bent) {
+    hls::split_into_span_pieces(poly, log2, *pieces);
+    for (int k = 0; k < int(pieces->count.value()); ++k)
+      if (n++ % every == 0) f(poly, pieces->piece[k]);
+  }
+}
+
+void write_span_piece_edges(const std::string& dir, const std::vector<hls::FormattedPrimitive>& bent) {
+  VectorFile<SpanPieceEdgesTopCase> file(dir, "pieces of polygons the snap bent, at rasters 64 and 512");
+  auto in = std::make_unique<SpanPieceEdgesTopCase::Input>();
+  for (int log2 : {6, 9})
+    for_each_piece(bent, log2, 3, [&](const hls::FormattedPrimitive& f, const hls::SpanPiece& piece) {
+      in->in = f;
+      in->piece = piece;
+      in->raster_log2 = hls::UInt<4>(log2);
+      file.add(*in);
+    });
+}
+
+void write_quadtree_span_setup(const std::string& dir, const std::vector<hls::FormattedPrimitive>& bent) {
+  VectorFile<QuadtreeSpanSetupTopCase> file(dir, "pieces of polygons the snap bent, at rasters 64 and 512");
+  auto in = std::make_unique<QuadtreeSpanSetupTopCase::Input>();
+  for (int log2 : {6, 9})
+    for_each_piece(bent, log2, 3, [&](const hls::FormattedPrimitive& f, const hls::SpanPiece& piece) {
+      in->f = f;
+      in->piece = piece;
+      in->raster_log2 = hls::UInt<4>(log2);
+      file.add(*in);
+    });
+}
+
 void write_all(const std::string& dir, const std::string& scenes) {
   Rng rng;
   const Sources s = make_sources(scenes, rng);
@@ -456,6 +544,10 @@ void write_all(const std::string& dir, const std::string& scenes) {
   write_quadtree_pe(dir, s, rng);
   write_mask_memory(dir, rng);
   write_quadtree_pixel(dir, s, rng);
+  const auto bent = bent_polygons(s, rng);
+  write_span_pieces(dir, bent, s);
+  write_span_piece_edges(dir, bent);
+  write_quadtree_span_setup(dir, bent);
 }
 
 }  // namespace

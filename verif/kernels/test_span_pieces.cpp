@@ -13,9 +13,9 @@
 
 #include "hls/formatter/span_pieces.hpp"
 #include "hls/quadtree/pe.hpp"
-#include "hls/quadtree/setup.hpp"
-#include "hls/segment/edge_generator.hpp"
+#include "hls/quadtree/span_setup.hpp"
 #include "hls/segment/segment_generator.hpp"
+#include "hls/segment/span_piece_edges.hpp"
 #include "segment_test_support.hpp"
 
 namespace cig::hls::segtest {

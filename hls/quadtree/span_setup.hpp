@@ -1,0 +1,88 @@
+// Span-piece setup (SPEC E, the setup for a polygon that snapping made non-convex): each span piece
+// of the polygon (hls/formatter/span_pieces.hpp) becomes a level-0 window of its own, whose edges
+// are the piece's left and right polygon edge and its first and last sample row, four exact edge
+// lines, and whose parameter planes are the polygon's. The PEs, the masks and the pixel processor
+// treat it as any convex piece.
+#pragma once
+
+#include "hls/formatter/span_pieces.hpp"
+#include "hls/quadtree/setup.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+// The positions of a setup input as the formatter's output (what the span-piece split reads).
+template <class P>
+void span_input_from_setup(const QuadPrimitiveInput<P>& in, FormattedPrimitive& f) {
+  f.n = in.n;
+  for (int k = 0; k < kMaxVertices; ++k) {
+    f.v[k].x = in.v[k].x;
+    f.v[k].y = in.v[k].y;
+  }
+}
+
+// Setup of one span piece of a polygon that snapping made non-convex: edges 0 and 1 are the left
+// and right polygon edges (the left one owns its ties, the right one does not: the crossing rule's
+// span [x_left, x_right)), edges 2 and 3 the piece's first and last sample row; the parameter
+// planes are the polygon's, fitted on its fan triangle (0, k, k + 1) of largest area (every piece
+// of the polygon gets the same planes). ok is false when every fan triangle is degenerate (the
+// vertices on one line: the polygon covers nothing).
+template <class P>
+void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece& piece, int raster_log2,
+                               QuadWindow<P>& root, bool& ok) {
+  const int n = int(in.n.value());
+  int hx[kMaxVertices], hy[kMaxVertices];
+  int e_min = 255, best = -1;
+  std::int64_t best_area = 0;
+  for (int k = 0; k < kMaxVertices; ++k) {
+    hx[k] = 2 * int(in.v[k].x.value());
+    hy[k] = 2 * int(in.v[k].y.value());
+  }
+  for (int k = 0; k < kMaxVertices; ++k) {
+    if (k >= n) break;
+    const int e = P::depth_exponent(in.v[k].z);
+    if (e < e_min) e_min = e;
+    if (k < 1 || k + 1 >= n) continue;
+    std::int64_t a =
+        std::int64_t(hx[k] - hx[0]) * (hy[k + 1] - hy[0]) - std::int64_t(hy[k] - hy[0]) * (hx[k + 1] - hx[0]);
+    if (a < 0) a = -a;
+    if (a > best_area) {
+      best_area = a;
+      best = k;
+    }
+  }
+  ok = best > 0;
+  if (!ok) return;
+  int idx[kQuadMaxEdges] = {0, best, best + 1, 0, 0, 0, 0, 0};
+  UInt<3> bbox;
+  quad_detail::setup_piece(in, hx, hy, idx, 3, raster_log2, e_min, root, bbox, ok);
+  if (!ok) return;
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  const int lt = int(piece.left_top.value()), lb = int(piece.left_bottom.value());
+  const int rt = int(piece.right_top.value()), rb = int(piece.right_bottom.value());
+  QuadPolygon<P>& poly = root.poly;
+  Int<29> c[kQuadMaxEdges];
+  quad_detail::edge_line(hx[lt], hy[lt], hx[lb], hy[lb], -1, g.log2_half_spacing, g.offset_half, poly.a[0], poly.b[0],
+                         c[0]);
+  quad_detail::edge_line(hx[rt], hy[rt], hx[rb], hy[rb], 1, g.log2_half_spacing, g.offset_half, poly.a[1], poly.b[1],
+                         c[1]);
+  for (int k = 2; k < kQuadMaxEdges; ++k) {
+    poly.a[k] = EdgeGradient(0);
+    poly.b[k] = EdgeGradient(k == 2 ? 1 : (k == 3 ? -1 : 0));
+    c[k] = Int<29>(k == 2 ? -int(piece.row_first.value()) : (k == 3 ? int(piece.row_last.value()) : 0));
+  }
+  for (int k = 0; k < kQuadMaxEdges; ++k)
+    root.d[k] = quad_detail::root_coverage(poly.a[k], poly.b[k], c[k], raster_log2);
+  poly.edge_count = UInt<4>(4);
+}
+
+// Top function (HLS): the default format; false when the polygon's vertices all lie on one line.
+inline bool quadtree_span_setup_top(const FormattedPrimitive& f, const SpanPiece& piece, UInt<4> raster_log2,
+                                    QuadWindow<DefaultQuadArith>& root) {
+  QuadPrimitiveInput<DefaultQuadArith> in;
+  quad_input_from_formatted(f, in);
+  bool ok = false;
+  quadtree_setup_span_piece(in, piece, int(raster_log2.value()), root, ok);
+  return ok;
+}
+
+CIG_HLS_END_NAMESPACE
