@@ -78,7 +78,8 @@ inline int crossing_row(const SpanEdge& p, const SpanEdge& q, const LatticeGeome
   if (first >= last) return -1;
   const int y0 = g.sample_half(first);
   const std::int64_t f0 = x_numerator(p, y0) * q.dy - x_numerator(q, y0) * p.dy;
-  const std::int64_t step = (std::int64_t(p.dx) * q.dy - std::int64_t(q.dx) * p.dy) << g.log2_half_spacing;
+  const std::int64_t step =
+      (std::int64_t(p.dx) * q.dy - std::int64_t(q.dx) * p.dy) * (std::int64_t(1) << g.log2_half_spacing);
   const int s0 = f0 > 0 ? 1 : (f0 < 0 ? -1 : (step > 0 ? 1 : -1));
   if (step == 0 || s0 * step >= 0) return -1;
   // Smallest t > 0 with s0 (f0 + step t) < 0.
