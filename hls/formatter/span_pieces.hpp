@@ -124,14 +124,13 @@ inline bool span_polygon_is_flat(const int (&hx)[kMaxVertices], const int (&hy)[
   return true;
 }
 
-// The span pieces of one formatted polygon on the lattice of an N = 2^raster_log2 raster.
+namespace span_detail {
+
+// Phase 1: the vertices in half units without repeated neighbours (the formatter can merge two),
+// with their index in the input. Returns their number.
 template <class Q>
-void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, SpanPieces& out) {
-  using span_detail::SpanEdge;
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int rows = kSamplesPerSide << raster_log2;
-  // Vertices in half units without repeated neighbours (the formatter can merge two).
-  int hx[kMaxVertices], hy[kMaxVertices], src[kMaxVertices];
+int kept_vertices(const FormattedPrimitiveT<Q>& in, int (&hx)[kMaxVertices], int (&hy)[kMaxVertices],
+                  int (&src)[kMaxVertices]) {
   int m = 0;
   for (int k = 0; k < kMaxVertices; ++k) {
     hx[k] = hy[k] = src[k] = 0;
@@ -147,12 +146,12 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     if (m <= 1 || !(hx[m - 1] == hx[0] && hy[m - 1] == hy[0])) break;
     --m;
   }
-  out.count = UInt<11>(0);
-  out.convex = m < 3 || span_polygon_is_convex(hx, hy, m) || span_polygon_is_flat(hx, hy, m);
-  if (out.convex) return;
+  return m;
+}
 
-  // Edges that cross at least one sample row.
-  SpanEdge edge[kMaxVertices];
+// Phase 2: the edges that cross at least one sample row, top vertex first. Returns their number.
+inline int crossing_edges(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], const int (&src)[kMaxVertices],
+                          int m, const LatticeGeometry& g, int rows, SpanEdge (&edge)[kMaxVertices]) {
   int ne = 0;
   for (int k = 0; k < kMaxVertices; ++k) {
     if (k >= m) break;
@@ -168,9 +167,13 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     if (e.row_first > e.row_last) continue;
     edge[ne++] = e;
   }
+  return ne;
+}
 
-  // Slab bounds: rows where an edge starts or ends, or where two edges change order.
-  int event[kMaxSpanEvents];
+// Phase 3: the slab bounds, sorted: rows where an edge starts or ends, or where two edges change
+// order. Returns their number (repeats included).
+inline int slab_bounds(const SpanEdge (&edge)[kMaxVertices], int ne, const LatticeGeometry& g,
+                       int (&event)[kMaxSpanEvents]) {
   int events = 0;
   for (int k = 0; k < kMaxVertices; ++k) {
     if (k >= ne) break;
@@ -178,7 +181,7 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     event[events++] = edge[k].row_last + 1;
     for (int l = 0; l < kMaxVertices; ++l) {
       if (l >= k) break;
-      const int r = span_detail::crossing_row(edge[k], edge[l], g);
+      const int r = crossing_row(edge[k], edge[l], g);
       if (r >= 0) event[events++] = r;
     }
   }
@@ -193,8 +196,73 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     }
     event[j] = v;
   }
+  return events;
+}
 
-  // Each slab: the crossing edges in order of x, paired into spans.
+// Phase 4a: the edges crossing the slab's rows in order of x on its first row, then on its last
+// (edges cannot cross inside a slab). Returns their number.
+inline int slab_order(const SpanEdge (&edge)[kMaxVertices], int ne, int first, int last, const LatticeGeometry& g,
+                      int (&order)[kMaxVertices]) {
+  const int y_first = g.sample_half(first), y_last = g.sample_half(last);
+  int active = 0;
+  for (int k = 0; k < kMaxVertices; ++k) {
+    if (k >= ne) break;
+    if (edge[k].row_first > first || edge[k].row_last < first) continue;
+    int j = active++;
+    for (int t = 0; t < kMaxVertices; ++t) {
+      if (j == 0) break;
+      const SpanEdge& o = edge[order[j - 1]];
+      const int c = compare_at(o, edge[k], y_first);
+      if (c < 0 || (c == 0 && compare_at(o, edge[k], y_last) <= 0)) break;
+      order[j] = order[j - 1];
+      --j;
+    }
+    order[j] = k;
+  }
+  return active;
+}
+
+// Phase 4b: one span of a slab as a piece: the piece of the slab above between the same two edges
+// grows down, or a new piece starts. Returns the piece's index.
+inline int add_span(const SpanEdge& l, const SpanEdge& r, int first, int last, const int (&above)[kMaxSpansPerRow],
+                    int above_count, SpanPieces& out, int& count) {
+  for (int q = 0; q < kMaxSpansPerRow; ++q) {
+    if (q >= above_count) break;
+    SpanPiece& pc = out.piece[above[q]];
+    if (int(pc.row_last.value()) == first - 1 && int(pc.left_top.value()) == l.top &&
+        int(pc.left_bottom.value()) == l.bottom && int(pc.right_top.value()) == r.top &&
+        int(pc.right_bottom.value()) == r.bottom) {
+      pc.row_last = Int<13>(last);
+      return above[q];
+    }
+  }
+  SpanPiece& pc = out.piece[count];
+  pc.left_top = UInt<4>(l.top);
+  pc.left_bottom = UInt<4>(l.bottom);
+  pc.right_top = UInt<4>(r.top);
+  pc.right_bottom = UInt<4>(r.bottom);
+  pc.row_first = Int<13>(first);
+  pc.row_last = Int<13>(last);
+  return count++;
+}
+
+}  // namespace span_detail
+
+// The span pieces of one formatted polygon on the lattice of an N = 2^raster_log2 raster.
+template <class Q>
+void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, SpanPieces& out) {
+  using span_detail::SpanEdge;
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  int hx[kMaxVertices], hy[kMaxVertices], src[kMaxVertices];
+  const int m = span_detail::kept_vertices(in, hx, hy, src);
+  out.count = UInt<11>(0);
+  out.convex = m < 3 || span_polygon_is_convex(hx, hy, m) || span_polygon_is_flat(hx, hy, m);
+  if (out.convex) return;
+  SpanEdge edge[kMaxVertices];
+  const int ne = span_detail::crossing_edges(hx, hy, src, m, g, kSamplesPerSide << raster_log2, edge);
+  int event[kMaxSpanEvents];
+  const int events = span_detail::slab_bounds(edge, ne, g, event);
+  // Each slab: its crossings paired left to right into spans.
   int count = 0;
   int above[kMaxSpansPerRow] = {}, here[kMaxSpansPerRow] = {};  // the pieces of the slab above, of this slab
   int above_count = 0;
@@ -202,51 +270,13 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
     if (s + 1 >= events) break;
     const int first = event[s], last = event[s + 1] - 1;
     if (first > last) continue;  // repeated bound
-    const int y_first = g.sample_half(first), y_last = g.sample_half(last);
     int order[kMaxVertices];
-    int active = 0;
-    for (int k = 0; k < kMaxVertices; ++k) {
-      if (k >= ne) break;
-      if (edge[k].row_first > first || edge[k].row_last < first) continue;
-      int j = active++;  // insertion by x on the first row, then on the last (edges cannot cross inside)
-      for (int t = 0; t < kMaxVertices; ++t) {
-        if (j == 0) break;
-        const SpanEdge& o = edge[order[j - 1]];
-        const int c = span_detail::compare_at(o, edge[k], y_first);
-        if (c < 0 || (c == 0 && span_detail::compare_at(o, edge[k], y_last) <= 0)) break;
-        order[j] = order[j - 1];
-        --j;
-      }
-      order[j] = k;
-    }
+    const int active = span_detail::slab_order(edge, ne, first, last, g, order);
     int here_count = 0;
     for (int span = 0; span < kMaxSpansPerRow; ++span) {
       if (2 * span + 1 >= active) break;
-      const SpanEdge& l = edge[order[2 * span]];
-      const SpanEdge& r = edge[order[2 * span + 1]];
-      // The same two edges bounded a span of the slab just above: extend that piece.
-      int merged = -1;
-      for (int q = 0; q < kMaxSpansPerRow; ++q) {
-        if (q >= above_count || merged >= 0) break;
-        const SpanPiece& pc = out.piece[above[q]];
-        if (int(pc.row_last.value()) == first - 1 && int(pc.left_top.value()) == l.top &&
-            int(pc.left_bottom.value()) == l.bottom && int(pc.right_top.value()) == r.top &&
-            int(pc.right_bottom.value()) == r.bottom)
-          merged = above[q];
-      }
-      if (merged >= 0) {
-        out.piece[merged].row_last = Int<13>(last);
-        here[here_count++] = merged;
-        continue;
-      }
-      here[here_count++] = count;
-      SpanPiece& pc = out.piece[count++];
-      pc.left_top = UInt<4>(l.top);
-      pc.left_bottom = UInt<4>(l.bottom);
-      pc.right_top = UInt<4>(r.top);
-      pc.right_bottom = UInt<4>(r.bottom);
-      pc.row_first = Int<13>(first);
-      pc.row_last = Int<13>(last);
+      here[here_count++] = span_detail::add_span(edge[order[2 * span]], edge[order[2 * span + 1]], first, last, above,
+                                                 above_count, out, count);
     }
     for (int q = 0; q < kMaxSpansPerRow; ++q) above[q] = here[q];
     above_count = here_count;
