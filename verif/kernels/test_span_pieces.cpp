@@ -194,6 +194,17 @@ TEST(SpanPieces, ConvexPolygonsTakeTheConvexPath) {
   }
 }
 
+// The engines' tests' polygons: every third a random star in a 150-unit box (wild), the others a
+// thin polygon the snap made non-convex. False when no such polygon came of this draw.
+bool bent_polygon(Rng& rng, bool wild, IntPolygon& p) {
+  if (!wild) return snap_to_non_convex(rng, p);
+  p = IntPolygon();
+  p.n = 3 + int(below(rng, 14));
+  const int x0 = int(below(rng, 3900)), y0 = int(below(rng, 3900));
+  for (int k = 0; k < p.n; ++k) p.x[k] = x0 + int(below(rng, 150)), p.y[k] = y0 + int(below(rng, 150));
+  return true;
+}
+
 // ---- The quadtree raster processor on span pieces ------------------------------------------------
 
 using QP = DefaultQuadArith;
@@ -249,13 +260,7 @@ TEST(SpanPieces, QuadtreeCoversTheCrossingRule) {
   for (int t = 0; polygons < 300 && t < 100000; ++t) {
     IntPolygon p;
     const bool wild = t % 3 == 0;
-    if (wild) {
-      p.n = 3 + int(below(rng, 14));
-      const int x0 = int(below(rng, 3900)), y0 = int(below(rng, 3900));
-      for (int k = 0; k < p.n; ++k) p.x[k] = x0 + int(below(rng, 150)), p.y[k] = y0 + int(below(rng, 150));
-    } else if (!snap_to_non_convex(rng, p)) {
-      continue;
-    }
+    if (!bent_polygon(rng, wild, p)) continue;
     p.opaque = true;
     for (int k = 0; k < p.n; ++k) p.z[k] = 127 << 7, p.i[k] = 128;
     const int log2 = 5 + polygons % 3;
@@ -317,13 +322,7 @@ TEST(SpanPieces, SegmentProcessorCoversTheCrossingRule) {
   for (int t = 0; polygons < 300 && t < 100000; ++t) {
     IntPolygon p;
     const bool wild = t % 3 == 0;
-    if (wild) {
-      p.n = 3 + int(below(rng, 14));
-      const int x0 = int(below(rng, 3900)), y0 = int(below(rng, 3900));
-      for (int k = 0; k < p.n; ++k) p.x[k] = x0 + int(below(rng, 150)), p.y[k] = y0 + int(below(rng, 150));
-    } else if (!snap_to_non_convex(rng, p)) {
-      continue;
-    }
+    if (!bent_polygon(rng, wild, p)) continue;
     if (turns_one_way(p)) continue;  // convex: the convex edge generator's tests cover it
     const int log2 = 5 + polygons % 4;
     const std::vector<int> got = segment_samples(p, log2);
