@@ -3,7 +3,8 @@
 // that no light shows on (the processor picks the light's colour instead where one does):
 //   vI = f[0] + dp_di[0] di + dp_dj[0] dj, vW likewise with parameter 1 (PW bits, wrapping:
 //     QuadFixedArith::at_sample);
-//   I = vI saturated to [0, 2^(8+G) - 1] (UFixed<8+G, 8>: same fractional bits, no rounding);
+//   I = vI saturated to [0, 256 2^G] (PlaneFixedArith::intensity, UFixed<9+G, 9>: same fractional
+//     bits, no rounding; 256 is full intensity);
 //   code = e8m7 code of 1/Z from vW (qt_e8m7_code); the processor looks it up in the fog table
 //     and returns the factor f9 (0..256; any 9-bit value is handled as the kernel would);
 //   per channel (hls/pixel/sample_colour.hpp):
@@ -31,7 +32,8 @@ module qt_pixel_lane #(
   output logic [47:0]   colour_o           // three 16-bit samples (8 fractional bits), R first
 );
 
-  localparam int IW = 8 + G;   // intensity: 8 integer, G fractional bits
+  localparam int IW = 9 + G;   // intensity: 9 integer (0..256), G fractional bits
+  localparam logic [IW-1:0] IntensityFull = IW'(256) << G;
 
   // ---- The parameters at the sample ---------------------------------------------------------------
   logic signed [PW-1:0] v_intensity, v_depth;
@@ -45,13 +47,13 @@ module qt_pixel_lane #(
                        times_offset(dj_intensity_i, sample_i[3:2]);
   assign v_depth = f_depth_i + times_offset(di_depth_i, sample_i[1:0]) + times_offset(dj_depth_i, sample_i[3:2]);
 
-  // ---- Intensity: saturated to [0, 2^IW - 1] ------------------------------------------------------
+  // ---- Intensity: saturated to [0, 256 2^G] -------------------------------------------------------
   logic [IW-1:0] intensity;
   always_comb begin
     if (v_intensity[PW-1]) begin
       intensity = '0;
-    end else if (|v_intensity[PW-2:IW]) begin
-      intensity = '1;
+    end else if (|v_intensity[PW-2:IW] || v_intensity[IW-1:0] > IntensityFull) begin
+      intensity = IntensityFull;
     end else begin
       intensity = v_intensity[IW-1:0];
     end
@@ -101,7 +103,7 @@ module qt_pixel_lane #(
 
   // ---- Limits (rtl/README.md "Parameters"): the intensity clamp reads v[PW-2:IW] ----------------
   if (PW < G + qt_pkg::PARAM_INT_BITS_MIN) begin : g_bad_pw
-    $error("qt_pixel_lane: PW must be at least G + 10");
+    $error("qt_pixel_lane: PW must be at least G + 11");
   end
 
 endmodule

@@ -34,7 +34,7 @@ package qt_pkg;
   localparam int N_LOG2_MAX = 10;             // x, y are COORD_W bits
   localparam int TREE_LEVELS_MAX = 5;         // qt_raster's tree depth (its PE placement)
   localparam int NSET_MAX = 64;               // the mask memory's write loops: the unroll limit of Verilator
-  localparam int PARAM_INT_BITS_MIN = 10;     // PW >= G + 10: the pixel lane's intensity clamp
+  localparam int PARAM_INT_BITS_MIN = 11;     // PW >= G + 11: the pixel lane's intensity clamp
   localparam int LIGHT_INDEX_W = 13;          // light index entries: cover entry + 1
   localparam int LIGHT_COVERS_MAX = (1 << LIGHT_INDEX_W) - 1;
 

@@ -28,6 +28,7 @@ struct EngineArgs {
   std::string engine = "float";
   std::vector<std::string> opts;
   bool snap = false;
+  std::string fan_split = "on";
   std::string arch, masks;  // shorthands for --engine-opt arch=... / masks=...
 
   // `required`: the command compares an engine with the reference, so it must be named.
@@ -41,6 +42,9 @@ struct EngineArgs {
     if (required) option->required();
     app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
     app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
+    app->add_option("--fan-split", fan_split,
+                    "split polygons whose vertex I or 1/Z are not planar into triangle fans: on (default) | off")
+        ->check(CLI::IsMember({"on", "off"}));
     app->add_option("--arch", arch,
                     "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
     app->add_option("--masks", masks, "quadtree engines: multilevel priority masks on|off");
@@ -48,6 +52,7 @@ struct EngineArgs {
   EngineOptions options() const {
     EngineOptions o;
     o.snap = snap;
+    o.fan_split = fan_split == "on";
     for (const auto& kv : opts) {
       auto eq = kv.find('=');
       if (eq == std::string::npos || eq == 0)

@@ -139,7 +139,8 @@ nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share,
 
 int CompareCommand::run() {
   const EngineOptions eo = engine.options();
-  const EngineOptions ro = reference_options(reference);
+  EngineOptions ro = reference_options(reference);
+  ro.fan_split = eo.fan_split;  // the reference follows the engine's polygon split
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   jobs.check_capacity(*make_engine(engine.engine, eo));

@@ -138,7 +138,8 @@ int SweepCommand::run() {
   const Varied varied = parse_vary(vary);
   if (base.params.count(varied.key))
     throw InputError("", "--vary", "'" + varied.key + "' is also set by --engine-opt (or a shorthand)");
-  const EngineOptions ro = reference_options(reference);
+  EngineOptions ro = reference_options(reference);
+  ro.fan_split = base.fan_split;  // the reference follows the engines' polygon split
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied);

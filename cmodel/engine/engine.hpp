@@ -17,6 +17,7 @@ namespace cig {
 
 struct EngineOptions {
   bool snap = false;                          // snap positions to the formatter grid first (float engine)
+  bool fan_split = true;                      // split polygons with non-planar attributes (engine/fan_split.hpp)
   std::map<std::string, std::string> params;  // engine-specific settings (--engine-opt KEY=VALUE)
 };
 
@@ -29,12 +30,24 @@ class RasterEngine {
  public:
   virtual ~RasterEngine() = default;
   virtual const char* name() const = 0;
-  virtual EngineRun render(const ScreenFrame& frame) = 0;
+  // Renders a frame: non-planar polygons split into fans first (unless the setting is off), ids
+  // mapped back to the input's polygons; the report counts the split ("fan_split").
+  EngineRun render(const ScreenFrame& frame);
   // Checks the engine's options against a raster size before any work (InputError).
   virtual void check_raster(int /*raster*/) const {}
-  // Checks a frame against the engine's capacities (the polygons and lights its id fields hold) and
-  // raster before any work, so that a command fails before its first output (InputError).
-  virtual void check_frame(const ScreenFrame& frame) const { check_raster(frame.raster); }
+  // Checks a frame (as split) against the engine's capacities (the polygons and lights its id
+  // fields hold) and raster before any work, so that a command fails before its first output
+  // (InputError).
+  void check_frame(const ScreenFrame& frame) const;
+  void set_fan_split(bool on) { fan_split_ = on; }
+
+ protected:
+  // The engine proper, on the frame as split.
+  virtual EngineRun render_frame(const ScreenFrame& frame) = 0;
+  virtual void check_split_frame(const ScreenFrame& frame) const { check_raster(frame.raster); }
+
+ private:
+  bool fan_split_ = true;
 };
 
 }  // namespace cig

@@ -41,7 +41,7 @@ ScreenFrame snap_to_formatter_grid(const ScreenFrame& f) {
 }
 
 double twin_grid(double s) { return std::clamp(kGridScale * s + kGridOffset, 0.0, double(kGridMax)); }
-double twin_intensity(double is) { return std::clamp(256.0 * is, 0.0, 255.0); }
+double twin_intensity(double is) { return std::clamp(256.0 * is, 0.0, 256.0); }
 double twin_diameter(double ds) { return std::clamp(kGridScale * ds, 0.0, kMaxLightDiameterUnits); }
 double twin_colour(double c) { return std::clamp(255.0 * c, 0.0, 255.0); }
 

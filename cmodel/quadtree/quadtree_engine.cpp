@@ -181,9 +181,11 @@ class QuadEngine : public RasterEngine {
  public:
   QuadEngine(const QuadOptions& o, const char* name, const char* format) : name_(name), pipeline_(o, name, format) {}
   const char* name() const override { return name_; }
-  EngineRun render(const ScreenFrame& frame) override { return pipeline_.render(frame); }
   void check_raster(int raster) const override { pipeline_.check_raster(raster); }
-  void check_frame(const ScreenFrame& frame) const override { pipeline_.check_frame(frame); }
+
+ protected:
+  EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame); }
+  void check_split_frame(const ScreenFrame& frame) const override { pipeline_.check_frame(frame); }
 
  private:
   const char* name_;

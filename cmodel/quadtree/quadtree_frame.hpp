@@ -55,7 +55,7 @@ struct QuadFront<hls::QuadFixedArith<Fmt>> {
     const typename P::Value w = P::inverse_depth_value(f.v[0].z, e);
     const typename P::Param v = typename P::Param(w) << P::G;
     const hls::FogFactor fog = P::fog_factor(t.fog, v, hls::Int<10>(P::w_exponent(e)));
-    const typename P::Intensity in(hls::UFixed<8, 8>::from_raw(f.v[0].i));
+    const typename P::Intensity in(hls::UFixed<9, 9>::from_raw(f.v[0].i));
     for (int c = 0; c < 3; ++c) out[c] = P::sample_colour(f.colour[c], in, fog, t.fog_colour[c]);
   }
 };

@@ -20,7 +20,9 @@ class FloatEngine : public RasterEngine {
     }
   }
   const char* name() const override { return "float"; }
-  EngineRun render(const ScreenFrame& frame) override {
+
+ protected:
+  EngineRun render_frame(const ScreenFrame& frame) override {
     ReferenceStats st;
     EngineRun run;
     if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_);

@@ -11,12 +11,24 @@ std::vector<std::string> engine_names() {
   return {"float", "segment", "segment-double", "quadtree", "quadtree-double"};
 }
 
-std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
+namespace {
+
+std::unique_ptr<RasterEngine> make_named_engine(const std::string& name, const EngineOptions& options) {
   if (name == "float") return make_reference_engine(options);
   if (name == "segment") return make_segment_engine(options, false);
   if (name == "segment-double") return make_segment_engine(options, true);
   if (name == "quadtree") return make_quadtree_engine(options, false);
   if (name == "quadtree-double") return make_quadtree_engine(options, true);
+  return nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
+  if (auto engine = make_named_engine(name, options)) {
+    engine->set_fan_split(options.fan_split);
+    return engine;
+  }
   std::string known;
   for (const auto& n : engine_names()) known += (known.empty() ? "" : ", ") + n;
   throw InputError("", "--engine", "unknown engine '" + name + "' (known: " + known + ")");

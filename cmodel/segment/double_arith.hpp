@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "hls/segment/segment_arith.hpp"
+#include "pixel/plane_double_arith.hpp"
 
 namespace cig {
 
@@ -17,6 +18,7 @@ struct DoubleSegmentArith {
   using Coord = double;
   using Diameter = double;
   using Level = double;
+  using VertexIntensity = double;
   using Depth = double;
   using Area = double;
   using X = double;
@@ -27,6 +29,40 @@ struct DoubleSegmentArith {
   struct FogTable {
     double start = 1e30, end = 2e30;
   };
+
+  // Perspective-correct mode: the planes of I and W = 1/Z through the unsnapped vertices, in
+  // sample units (Newell's area-weighted fit, as the fixed kernel; the twin never splits a polygon,
+  // so fan_triangle does not arise).
+  using Plane = PlaneDoubleArith;
+  using Planes = hls::AttributePlanes<Plane>;
+  static void fit_planes(const hls::FormattedPrimitiveT<DoubleSegmentArith>& in, int raster_log2, bool, Planes& out) {
+    const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+    const double s = std::ldexp(1.0, g.log2_half_spacing), o = g.offset_half;
+    const int n = int(in.n.value());
+    double nz = 0, sx = 0, sy = 0, nx[2] = {0, 0}, ny[2] = {0, 0}, sv[2] = {0, 0};
+    auto value = [&](int k, int p) { return p == hls::kParamIntensity ? in.v[k].i : 1.0 / in.v[k].z; };
+    for (int k = 0; k < n; ++k) {
+      const int k1 = k + 1 == n ? 0 : k + 1;
+      const double x0 = (2 * in.v[k].x - o) / s, y0 = (2 * in.v[k].y - o) / s;
+      const double x1 = (2 * in.v[k1].x - o) / s, y1 = (2 * in.v[k1].y - o) / s;
+      nz += (x0 - x1) * (y0 + y1);
+      sx += x0;
+      sy += y0;
+      for (int p = 0; p < hls::kPlaneParams; ++p) {
+        nx[p] += (y0 - y1) * (value(k, p) + value(k1, p));
+        ny[p] += (value(k, p) - value(k1, p)) * (x0 + x1);
+        sv[p] += value(k, p);
+      }
+    }
+    out = Planes();
+    if (n < 3 || nz == 0) return;
+    for (int p = 0; p < hls::kPlaneParams; ++p) {
+      out.d[p] = -nx[p] / nz;
+      out.e[p] = -ny[p] / nz;
+      out.f[p] = (sv[p] - out.d[p] * sx - out.e[p] * sy) / n;
+    }
+    out.w_exponent = hls::Int<10>(0);
+  }
 
   static double row_y(const LatticeGeometry& g, int k) { return 0.5 * g.sample_half(k); }
   static double spacing(const LatticeGeometry& g) { return std::ldexp(1.0, g.log2_half_spacing - 1); }

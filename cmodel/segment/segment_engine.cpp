@@ -57,6 +57,8 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
     return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255)));
   }
   static void fog_table(typename P::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, false); }
+  // Perspective-correct mode: the table indexed by the e8m7 code of 1/Z.
+  static void fog_inverse_table(typename P::Plane::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, true); }
   // A polygon that snapping made non-convex: its span pieces (hls/formatter/span_pieces.hpp).
   static bool split(const hls::FormattedPrimitive& f, int log2, hls::SpanPieces& pieces) {
     hls::split_into_span_pieces(f, log2, pieces);
@@ -116,6 +118,10 @@ struct Front<DoubleSegmentArith> {
     t.start = fog.start;
     t.end = fog.end;
   }
+  static void fog_inverse_table(P::Plane::FogTable& t, const Fog& fog) {
+    t.start = fog.start;
+    t.end = fog.end;
+  }
   // The twin keeps the formatter's unsnapped positions: a convex polygon stays convex.
   static bool split(const hls::FormattedPrimitiveT<P>&, int, hls::SpanPieces&) { return false; }
 };
@@ -133,7 +139,12 @@ class SegmentPipeline {
         segments_(std::make_unique<hls::Segment<P>[]>(hls::kMaxLines)),
         span_pieces_(std::make_unique<hls::SpanPieces>()) {}
 
-  explicit SegmentPipeline(bool seed_quadrilateral) : SegmentPipeline() { seed_quadrilateral_ = seed_quadrilateral; }
+  // seed_quadrilateral: the seed's four-X segment (x-rows=2); seed_interpolation: the seed's I and
+  // Z at segment ends (eq. 3-4), interpolated along the row (interp=seed), instead of the planes.
+  SegmentPipeline(bool seed_quadrilateral, bool seed_interpolation) : SegmentPipeline() {
+    seed_quadrilateral_ = seed_quadrilateral;
+    seed_interpolation_ = seed_interpolation;
+  }
 
   // The raster's log2 and the frame's counts against the hardware's (InputError).
   static int check_frame(const ScreenFrame& frame) {
@@ -259,6 +270,7 @@ class SegmentPipeline {
     int addr = 0;
     while (hls::frame_memory_read(*frame_memory_, st.bank, addr, edges)) {
       emit_lights_before(long(edges.h.id.value()));
+      tables_->polygon_planes[edges.h.id.value()] = edges.h.planes;
       const int code = int(edges.h.area_code.value());
       if (code > st.threshold) {
         ++st.dropped_overload;
@@ -278,6 +290,8 @@ class SegmentPipeline {
   void video(const ScreenFrame& frame, int log2, RasterImage& out, FrameStats& st) {
     const int n = frame.raster;
     F::fog_table(tables_->fog, frame.fog);
+    F::fog_inverse_table(tables_->fog_inverse, frame.fog);
+    tables_->plane_mode = !seed_interpolation_;
     for (int c = 0; c < 3; ++c) {
       tables_->fog_colour[c] = F::level(frame.fog.colour[c]);
       tables_->background[c] = F::level(frame.background[c]);
@@ -302,6 +316,7 @@ class SegmentPipeline {
     rep["engine"] = engine_name;
     rep["format"] = format_name;
     rep["seed_quadrilateral"] = seed_quadrilateral_;
+    rep["interpolation"] = seed_interpolation_ ? "seed" : "plane";
     const int n = frame.raster;
     const long stored = segment_memory_->used[0] + segment_memory_->used[1];
     const long lost = long(segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value());
@@ -354,20 +369,24 @@ class SegmentPipeline {
   std::unique_ptr<hls::Segment<P>[]> segments_;
   std::unique_ptr<hls::SpanPieces> span_pieces_;  // of the polygon being formatted
   bool seed_quadrilateral_ = false;
+  bool seed_interpolation_ = false;
 };
 
 template <class P>
 class SegmentEngine : public RasterEngine {
  public:
-  SegmentEngine(const char* name, const char* format, bool quad) : name_(name), format_(format), pipeline_(quad) {}
+  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp)
+      : name_(name), format_(format), pipeline_(quad, seed_interp) {}
   const char* name() const override { return name_; }
-  EngineRun render(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
   void check_raster(int raster) const override {
     ScreenFrame f;
     f.raster = raster;
     SegmentPipeline<P>::check_frame(f);
   }
-  void check_frame(const ScreenFrame& frame) const override { SegmentPipeline<P>::check_frame(frame); }
+
+ protected:
+  EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
+  void check_split_frame(const ScreenFrame& frame) const override { SegmentPipeline<P>::check_frame(frame); }
 
  private:
   const char* name_;
@@ -382,7 +401,7 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
     throw InputError("", "--snap",
                      "--snap applies to the float engine; the segment engine's formatter snaps by itself");
   std::string format = "fine";
-  bool quad = false;
+  bool quad = false, seed_interp = false;
   const char* engine = twin ? "segment-double" : "segment";
   for (const auto& [key, value] : options.params) {
     if (key == "format" && !twin) {
@@ -392,22 +411,28 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
         throw InputError("", "--engine-opt",
                          "x-rows must be 4 (X at every sample row) or 2 (the seed's four-X segment)");
       quad = value == "2";
+    } else if (key == "interp") {
+      if (value != "plane" && value != "seed")
+        throw InputError("", "--engine-opt",
+                         "interp must be plane (perspective-correct planes of I and 1/Z) or seed (eq. 3-4 at the "
+                         "segment ends)");
+      seed_interp = value == "seed";
     } else {
       throw InputError("", "--engine-opt",
                        std::string("engine '") + engine + "' takes no option '" + key +
-                           (twin ? "' (known: x-rows)" : "' (known: format, x-rows)"));
+                           (twin ? "' (known: x-rows, interp)" : "' (known: format, x-rows, interp)"));
     }
   }
-  if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad);
+  if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp);
   if (format == "coarse")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(
-        engine, hls::SegmentFormatCoarse::name, quad);
+        engine, hls::SegmentFormatCoarse::name, quad, seed_interp);
   if (format == "medium")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(
-        engine, hls::SegmentFormatMedium::name, quad);
+        engine, hls::SegmentFormatMedium::name, quad, seed_interp);
   if (format == "fine")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
-        engine, hls::SegmentFormatFine::name, quad);
+        engine, hls::SegmentFormatFine::name, quad, seed_interp);
   throw InputError("", "--engine-opt", "format '" + format + "' is not one of coarse, medium, fine");
 }
 

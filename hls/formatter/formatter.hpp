@@ -139,6 +139,12 @@ inline UInt<W> scaled_round(const UInt<64>& bits) {
   return twice.nan ? UInt<W>(0) : saturate_unsigned<W>(r);    // clamp 0..2^W - 1
 }
 
+// I of eq. 1: round(256 Is) (half up), clamped to 0..256 (UInt<9>: 256 is full intensity).
+inline UInt<9> vertex_intensity(const UInt<64>& is) {
+  const UInt<9> r = scaled_round<1, 8, 9>(is);
+  return r.value() > 256 ? UInt<9>(256) : r;
+}
+
 // X or Y of eq. 1: the C model's round(2048*s + 2047) (round half away from zero of the
 // binary64 sum), clamped to 0..4095, for every binary64 s.
 //
@@ -207,7 +213,7 @@ inline void formatter_top(const RawPrimitive& in, FormattedPrimitive& out) {
     if (UInt<5>(k) < count) {
       fv.x = formatter_detail::grid_coordinate(in.v[k].xs);
       fv.y = formatter_detail::grid_coordinate(in.v[k].ys);
-      fv.i = formatter_detail::scaled_round<1, 8, 8>(in.v[k].is);  // 256*Is, 0..255
+      fv.i = formatter_detail::vertex_intensity(in.v[k].is);
       fv.z = formatter_detail::to_zfloat(in.v[k].zs);
     }
     out.v[k] = fv;

@@ -43,7 +43,7 @@ struct RawPrimitive {
 template <class P>
 struct FormattedVertexT {
   typename P::Coord x, y;
-  typename P::Level i;
+  typename P::VertexIntensity i;  // 256 Is, 0..256 (fixed: UInt<9>; 256 = full intensity)
   typename P::Depth z;
 };
 
@@ -63,6 +63,9 @@ struct FormatterTypes {
   using Coord = UInt<12>;
   using Diameter = UInt<3>;
   using Level = UInt<8>;
+  // I = 256 Is (eq. 1) needs 9 bits for Is = 1: with 8 bits full intensity clamped to 255 and
+  // white came out 254 (255 x 255 / 256).
+  using VertexIntensity = UInt<9>;
   using Depth = ZFloat;
 };
 using FormattedVertex = FormattedVertexT<FormatterTypes>;

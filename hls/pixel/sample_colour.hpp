@@ -33,12 +33,13 @@ struct FogTable {
 inline FogFactor fog_lookup(const FogTable& t, const ZFloat& code) { return t.f[code.bits.value()]; }
 
 // colour x I (SPEC D: "colour = polygon colour x I"): c * I / 256 in output LSB, rounded half up
-// to 8 fractional bits, saturated at 255.996. Intensity is any unsigned fixed format with 8
-// integer bits (0..255.x).
+// to 8 fractional bits, saturated at 255.996. Intensity is any unsigned fixed format (0..256:
+// full intensity 256 keeps the colour, so white stays 255).
 template <class Intensity>
 inline SampleColour shade(const SampleLevel& c, const Intensity& i) {
-  const auto p = UFixed<8, 8>::from_raw(c) * i;                           // UFixed<8 + W, 16>: c * I, exact
-  return SampleColour(UFixed<decltype(p)::width, 8>::from_raw(p.raw()));  // / 256
+  const auto p = UFixed<8, 8>::from_raw(c) * i;  // UFixed<8 + W, 8 + I_int>: c * I, exact
+  using Product = decltype(p);
+  return SampleColour(UFixed<Product::width, Product::int_bits - 8>::from_raw(p.raw()));  // / 256
 }
 
 // Fog: s * (1 - f) + fog * f, exact, then rounded half up to the sample format.

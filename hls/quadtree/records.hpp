@@ -27,7 +27,7 @@
 #pragma once
 
 #include "hls/formatter/records.hpp"
-#include "hls/pixel/sample_colour.hpp"
+#include "hls/pixel/attribute_planes.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -37,10 +37,8 @@ constexpr int kQuadMaxLevels = kMaxRasterLog2;  // levels 0..n, n = log2 N <= 10
 // watertight under the tie rule, so the union covers exactly the polygon's samples); bounding-box
 // edges (setup.hpp) are added only where slots remain.
 constexpr int kQuadMaxEdges = 8;
-constexpr int kQuadMaxPieces = 3;  // 16 vertices -> pieces of 8, 8 and 4 vertices
-constexpr int kQuadParams = 2;     // surface parameters: intensity I and inverse depth W = 1/Z
-constexpr int kParamIntensity = 0;
-constexpr int kParamInverseDepth = 1;
+constexpr int kQuadMaxPieces = 3;          // 16 vertices -> pieces of 8, 8 and 4 vertices
+constexpr int kQuadParams = kPlaneParams;  // I and W = 1/Z (hls/pixel/attribute_planes.hpp)
 constexpr int kQuadChildren = 4;
 
 // ---- Edge functions (exact integers) ----------------------------------------------------------
@@ -56,24 +54,11 @@ using EdgeGradient = Int<22>;
 using EdgeValue = Int<32>;
 
 // ---- Parameter formats -------------------------------------------------------------------------
-// A parameter is a plane value(i, j) = D i + E j + F in "value units" with G fractional bits:
-//   I: value units = intensity levels 0..255 (the formatter's I).
-//   W: value units = 2^-MW of the polygon's largest vertex 1/Z (a block exponent per polygon,
-//      QuadPolygon::w_exponent), so every polygon keeps MW significant bits of 1/Z whatever its
-//      distance; values 0..2^MW.
-// V = max(8, MW + 1) value bits. Gradients are saturated to |D|, |E| < 2^V value units per sample
-// (a value swing over the whole range within one sample: only degenerate slivers reach it).
-// Anywhere on the lattice (|i|, |j| < 2^12) |value| <= 2^V (1 + 2 * 2 * 2^12) < 2^(V + 14.01), so
-// the value register has V + 15 integer bits plus a sign: Int<V + 16 + G>. The recurrence adds
-// shifted gradients exactly: no rounding after the setup.
+// A parameter is a plane value(i, j) = D i + E j + F in "value units" with G fractional bits, in
+// the pixel stages' shared formats (hls/pixel/attribute_planes.hpp: value units, V, Param,
+// Gradient). The shifted gradients of the recurrence add exactly: no rounding after the setup.
 template <int kG, int kMW>
-struct QuadFormatBase {
-  static constexpr int G = kG;    // fractional bits of D, E, F and every parameter value
-  static constexpr int MW = kMW;  // significant bits of W = 1/Z per polygon
-  static constexpr int V = (kMW + 1 > 8 ? kMW + 1 : 8);
-  static constexpr int kParamWidth = V + 16 + kG;
-  static constexpr int kGradientWidth = V + 1 + kG;
-};
+using QuadFormatBase = PlaneFormatBase<kG, kMW>;
 
 // The formats of the run-time / error table (`cig sweep ... --vary format=coarse,medium,fine`).
 struct QuadFormatCoarse : QuadFormatBase<6, 12> {

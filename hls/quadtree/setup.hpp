@@ -169,32 +169,21 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
   poly.edge_count = UInt<4>(used);
   bbox_added = UInt<3>(added);
 
-  // Parameter planes (Newell, quadtree_arith.hpp).
-  typename P::Value val[kQuadParams][kQuadMaxEdges];
-  for (int k = 0; k < kQuadMaxEdges; ++k) {
-    if (k >= m) break;
-    val[kParamIntensity][k] = P::intensity_value(in.v[idx[k]].i);
-    val[kParamInverseDepth][k] = P::inverse_depth_value(in.v[idx[k]].z, e_min);
+  // Parameter planes (Newell, hls/pixel/attribute_planes.hpp).
+  typename P::VertexI vi[kMaxVertices];
+  typename P::VertexZ vz[kMaxVertices];
+  for (int k = 0; k < kMaxVertices; ++k) {
+    vi[k] = in.v[k].i;
+    vz[k] = in.v[k].z;
   }
-  Int<24> si7(0), sj7(0);
-  for (int k = 0; k < kQuadMaxEdges; ++k) {
-    if (k >= m) break;
-    si7 = wrap<24>(si7 + Int<24>((hx[idx[k]] - o) * (1 << (7 - ls))));
-    sj7 = wrap<24>(sj7 + Int<24>((hy[idx[k]] - o) * (1 << (7 - ls))));
-  }
+  AttributePlanes<P> planes;
+  fit_attribute_planes<P>(vi, vz, hx, hy, idx, m, nz, raster_log2, e_min, planes);
   for (int p = 0; p < kQuadParams; ++p) {
-    typename P::NewellSum nx = typename P::NewellSum(), ny = typename P::NewellSum();
-    typename P::SumValue sum_v = typename P::SumValue();
-    for (int k = 0; k < kQuadMaxEdges; ++k) {
-      if (k >= m) break;
-      const int k1 = k + 1 == m ? 0 : k + 1;
-      nx = P::newell_add(nx, P::newell_x(Int<15>(hy[idx[k]] - hy[idx[k1]]), val[p][k], val[p][k1]));
-      ny = P::newell_add(ny, P::newell_y(Int<15>(hx[idx[k]] + hx[idx[k1]]), val[p][k], val[p][k1]));
-      sum_v = P::value_add(sum_v, val[p][k]);
-    }
-    P::plane(nx, ny, nz, sum_v, si7, sj7, m, ls, poly.dp_di[p], poly.dp_dj[p], root.f[p]);
+    poly.dp_di[p] = planes.d[p];
+    poly.dp_dj[p] = planes.e[p];
+    root.f[p] = planes.f[p];
   }
-  poly.w_exponent = Int<10>(P::w_exponent(e_min));
+  poly.w_exponent = planes.w_exponent;
 }
 
 }  // namespace quad_detail

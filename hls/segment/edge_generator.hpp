@@ -92,6 +92,7 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
   PolygonHeader<P>& h = out.h;
   out.valid = false;
   const typename P::Area twice = detail::polygon_header(in, h);
+  P::fit_planes(in, raster_log2, false, h.planes);
   int top = 0, bottom = 0;  // the Y extremes
   for (int j = 0; j < kMaxVertices; ++j) {
     if (j >= n) break;

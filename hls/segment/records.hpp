@@ -33,7 +33,7 @@ template <class P>
 struct Edge {
   int row_first = 0, row_last = -1;  // global sample rows whose Y lies in [y_begin, y_end) (< 4096)
   typename P::Coord x_begin, y_begin, x_end, y_end;
-  typename P::Level i_begin, i_end;
+  typename P::VertexIntensity i_begin, i_end;
   typename P::Depth z_begin, z_end;
   typename P::Slope dx_per_row;  // eq. 2 times the sample-row spacing
   typename P::Slope x_first;     // X at row_first (the preprocessor's first crossing), in the
@@ -54,6 +54,7 @@ struct PolygonHeader {
   int row_first = 0, row_last = -1;      // sample rows covered by the polygon
   UInt<11> segments_even, segments_odd;  // raster lines crossed, by field (for overload)
   UInt<5> left_count, right_count;
+  typename P::Planes planes;  // I and W = 1/Z (perspective-correct mode; travels with the header)
 };
 
 template <class P>

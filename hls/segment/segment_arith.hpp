@@ -17,7 +17,7 @@
 
 // hls-subset-helper: the arithmetic policy and format sets shared by every segment kernel.
 
-#include "hls/pixel/sample_colour.hpp"
+#include "hls/pixel/attribute_planes.hpp"
 #include "hls/segment/records.hpp"
 #include "hls/types/zfloat_ops.hpp"
 
@@ -29,6 +29,7 @@ struct FixedSegmentArith {
   using Coord = UInt<12>;
   using Diameter = UInt<3>;
   using Level = UInt<8>;
+  using VertexIntensity = UInt<9>;  // 256 Is, 0..256 (the formatter's I)
   using Depth = ZFloat;
   using Area = Int<32>;  // twice the area, grid units^2: |.| <= 16 * 4095 * 8190 < 2^30
   using X = typename Fmt::X;
@@ -36,6 +37,80 @@ struct FixedSegmentArith {
   using Intensity = typename Fmt::Intensity;
 
   static int coord_half(const Coord& c) { return int(c.value()) * 2; }
+
+  // Perspective-correct mode: the polygon's planes of I and W = 1/Z, in the pixel stages' shared
+  // format (hls/pixel/attribute_planes.hpp), fitted as the quadtree setup fits them.
+  using Plane = PlaneFixedArith<PlaneFormatDefault>;
+  using Planes = AttributePlanes<Plane>;
+  // Over the polygon's vertices without consecutive repeats (fan_triangle false: a convex polygon),
+  // or on its fan triangle (0, k, k + 1) of largest area (a polygon that snapping made non-convex:
+  // every span piece gets the same planes). A polygon of no area gets zero planes (it draws
+  // nothing).
+  static void fit_planes(const FormattedPrimitive& in, int raster_log2, bool fan_triangle, Planes& out) {
+    int hx[kMaxVertices], hy[kMaxVertices], idx[kMaxVertices];
+    typename Plane::VertexI vi[kMaxVertices];
+    typename Plane::VertexZ vz[kMaxVertices];
+    const int n = int(in.n.value());
+    for (int k = 0; k < kMaxVertices; ++k) {
+      hx[k] = 2 * int(in.v[k].x.value());
+      hy[k] = 2 * int(in.v[k].y.value());
+      vi[k] = typename Plane::VertexI(in.v[k].i.value());
+      vz[k] = in.v[k].z;
+      idx[k] = 0;
+    }
+    const int m = fan_triangle ? largest_fan_triangle(hx, hy, n, idx) : distinct_vertices(hx, hy, n, idx);
+    int e_min = 255;
+    for (int k = 0; k < kMaxVertices; ++k) {
+      if (k >= (fan_triangle ? n : m)) break;
+      const int e = Plane::depth_exponent(vz[fan_triangle ? k : idx[k]]);
+      if (e < e_min) e_min = e;
+    }
+    Int<34> nz(0);
+    for (int k = 0; k < kMaxVertices; ++k) {
+      if (k >= m) break;
+      const int a = idx[k], b = idx[k + 1 == m ? 0 : k + 1];
+      nz = wrap<34>(nz + Int<15>(hx[a] - hx[b]) * Int<15>(hy[a] + hy[b]));
+    }
+    out = Planes();
+    if (m < 3 || nz.value() == 0) return;
+    fit_attribute_planes<Plane>(vi, vz, hx, hy, idx, m, nz, raster_log2, e_min, out);
+  }
+  // The vertices without consecutive (and closing) repeats, as the quadtree setup keeps them.
+  static int distinct_vertices(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int n,
+                               int (&idx)[kMaxVertices]) {
+    int m = 0;
+    for (int k = 0; k < kMaxVertices; ++k) {
+      if (k >= n) break;
+      if (m > 0 && hx[k] == hx[idx[m - 1]] && hy[k] == hy[idx[m - 1]]) continue;
+      idx[m++] = k;
+    }
+    for (int k = 0; k < kMaxVertices; ++k) {
+      if (m <= 1 || !(hx[idx[m - 1]] == hx[idx[0]] && hy[idx[m - 1]] == hy[idx[0]])) break;
+      --m;
+    }
+    return m;
+  }
+  // The fan triangle (0, k, k + 1) of largest area (the quadtree's span-piece setup); 0 if none.
+  static int largest_fan_triangle(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int n,
+                                  int (&idx)[kMaxVertices]) {
+    int best = -1;
+    std::int64_t best_area = 0;
+    for (int k = 1; k < kMaxVertices - 1; ++k) {
+      if (k + 1 >= n) break;
+      std::int64_t a =
+          std::int64_t(hx[k] - hx[0]) * (hy[k + 1] - hy[0]) - std::int64_t(hy[k] - hy[0]) * (hx[k + 1] - hx[0]);
+      if (a < 0) a = -a;
+      if (a > best_area) {
+        best_area = a;
+        best = k;
+      }
+    }
+    if (best < 0) return 0;
+    idx[0] = 0;
+    idx[1] = best;
+    idx[2] = best + 1;
+    return 3;
+  }
 
   // Eq. 5-6: dY_j * sX_j = (Y_{j+1} - Y_j) * (X_{j+1} + X_j); twice the area is minus their sum.
   static Area area_term(const Coord& x0, const Coord& y0, const Coord& x1, const Coord& y1) {
@@ -99,15 +174,16 @@ struct FixedSegmentArith {
     const int t4 = yt_quarter - 4 * int(yb.value()), dy4 = 4 * (int(ye.value()) - int(yb.value()));
     return t4 < 0 ? 0 : (t4 > dy4 ? dy4 : t4);
   }
-  // Eq. 3: I at yt (quarter units) on an edge from (yb, ib) to (ye, ie), clamped to [0, 255].
-  static Intensity intensity_at(const Level& ib, const Level& ie, const Coord& yb, const Coord& ye, int yt_quarter) {
+  // Eq. 3: I at yt (quarter units) on an edge from (yb, ib) to (ye, ie), within [0, 256].
+  static Intensity intensity_at(const VertexIntensity& ib, const VertexIntensity& ie, const Coord& yb, const Coord& ye,
+                                int yt_quarter) {
     const Int<10> di = Int<10>(int(ie.value()) - int(ib.value()));
     const Int<16> t4 = Int<16>(along_edge_quarter(yb, ye, yt_quarter));  // quarter units below yb
     const Int<15> dy4 = Int<15>(4 * (int(ye.value()) - int(yb.value())));
     const Int<26> num = di * t4;
-    const auto along = fixed_div<Fixed<Intensity::width + 2, 10, Intensity::quant, Overflow::kSat>>(
+    const auto along = fixed_div<Fixed<Intensity::width + 1, 10, Intensity::quant, Overflow::kSat>>(
         Fixed<26, 26>::from_raw(num), Fixed<15, 15>::from_raw(dy4));
-    return Intensity(Fixed<9, 9>::from_raw(Int<9>(int(ib.value()))) + along);  // saturates to 0..255
+    return Intensity(Fixed<10, 10>::from_raw(Int<10>(int(ib.value()))) + along);  // between ib and ie
   }
   // Eq. 4 on e8m7 values.
   static Depth depth_at(const Depth& zb, const Depth& ze, const Coord& yb, const Coord& ye, int yt_quarter) {
@@ -163,18 +239,18 @@ struct FixedSegmentArith {
 };
 
 // Format sets for the run-time / error table. X: grid units; Slope: grid units per sample row;
-// Intensity: 0..255. All round to nearest (half up) and saturate.
+// Intensity: 0..256. All round to nearest (half up) and saturate.
 struct SegmentFormatCoarse {
   static constexpr const char* name = "x2s6i0";
   using X = Fixed<16, 14, Quant::kRound, Overflow::kSat>;
   using Slope = Fixed<26, 20, Quant::kRound, Overflow::kSat>;
-  using Intensity = UFixed<8, 8, Quant::kRound, Overflow::kSat>;
+  using Intensity = UFixed<9, 9, Quant::kRound, Overflow::kSat>;
 };
 struct SegmentFormatMedium {
   static constexpr const char* name = "x4s10i2";
   using X = Fixed<18, 14, Quant::kRound, Overflow::kSat>;
   using Slope = Fixed<30, 20, Quant::kRound, Overflow::kSat>;
-  using Intensity = UFixed<10, 8, Quant::kRound, Overflow::kSat>;
+  using Intensity = UFixed<11, 9, Quant::kRound, Overflow::kSat>;
 };
 // Fine: the coverage is EXACT (equal, sample for sample, to the exact edge functions with the tie
 // rule). An edge's exact crossing at a sample row, xa + dx (Y_k - ya) / dy, and a sample column
@@ -189,7 +265,7 @@ struct SegmentFormatFine {
   static constexpr const char* name = "x13s26i6";
   using X = Fixed<27, 14, Quant::kRound, Overflow::kSat>;
   using Slope = Fixed<46, 20, Quant::kRound, Overflow::kSat>;
-  using Intensity = UFixed<14, 8, Quant::kRound, Overflow::kSat>;
+  using Intensity = UFixed<15, 9, Quant::kRound, Overflow::kSat>;
 };
 
 // The format of the top functions and of `--engine segment` unless told otherwise.

@@ -19,6 +19,7 @@ void generate_span_piece_edges(const FormattedPrimitiveT<Q>& in, const SpanPiece
   const int rows = kRowsPerLine << raster_log2;
   PolygonHeader<P>& h = out.h;
   detail::polygon_header(in, h);
+  P::fit_planes(in, raster_log2, true, h.planes);
   const int first = int(piece.row_first.value()), last = int(piece.row_last.value());
   const int ends[2][2] = {{int(piece.left_top.value()), int(piece.left_bottom.value())},
                           {int(piece.right_top.value()), int(piece.right_bottom.value())}};

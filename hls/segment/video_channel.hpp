@@ -16,7 +16,13 @@ template <class P>
 struct VideoTables {
   typename P::Level polygon_colour[kMaxPolygonIds][3];
   typename P::Level light_colour[kMaxPolygonIds][3];
-  typename P::FogTable fog;
+  typename P::FogTable fog;  // indexed by the code of Z: light points, and polygons in seed mode
+  // Perspective-correct mode (plane_mode): each polygon's planes of I and W = 1/Z, written from the
+  // frame memory's header as the preprocessor reads the polygon, and the fog table indexed by the
+  // e8m7 code of 1/Z (hls/pixel/attribute_planes.hpp).
+  bool plane_mode = true;
+  typename P::Planes polygon_planes[kMaxPolygonIds];
+  typename P::Plane::FogTable fog_inverse;
   typename P::Level fog_colour[3];
   typename P::Level background[3];
 };
@@ -34,6 +40,22 @@ struct PixelLine {
 };
 
 namespace detail {
+
+// Perspective-correct mode: sample (i, row) of polygon src takes I and W = 1/Z from the polygon's
+// planes, exactly (F + D i + E j: in hardware the video channel steps the values along the row by
+// D, which gives the same bits), colour x I and fog by 1/Z, as the quadtree's pixel processor.
+template <class P>
+void plane_sample(const VideoTables<P>& t, int src, int i, int row, typename P::Sample (&rgb)[3]) {
+  using Plane = typename P::Plane;
+  const typename P::Planes& pl = t.polygon_planes[src];
+  const typename Plane::Param vi =
+      Plane::at_sample(pl.f[kParamIntensity], pl.d[kParamIntensity], pl.e[kParamIntensity], i, row);
+  const typename Plane::Param vw =
+      Plane::at_sample(pl.f[kParamInverseDepth], pl.d[kParamInverseDepth], pl.e[kParamInverseDepth], i, row);
+  const typename Plane::Intensity in = Plane::intensity(vi);
+  const typename Plane::FogFactorType f = Plane::fog_factor(t.fog_inverse, vw, pl.w_exponent);
+  for (int c = 0; c < 3; ++c) rgb[c] = Plane::sample_colour(t.polygon_colour[src][c], in, f, t.fog_colour[c]);
+}
 
 template <class P>
 void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int cols, const VideoTables<P>& t,
@@ -58,6 +80,10 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
       if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
       if (w.owned[r][i]) continue;
       w.owned[r][i] = true;
+      if (t.plane_mode && !s.is_light) {
+        plane_sample(t, src, i, row, w.rgb[r][i]);
+        continue;
+      }
       const typename P::Ratio along = P::ratio(typename P::X(P::column_x(g, i) - xlt), inv);
       const typename P::Intensity in = P::lerp_intensity(s.il, s.ir, along);
       const typename P::Depth z = P::lerp_depth(s.zl, s.zr, along);

@@ -316,18 +316,25 @@ void write_y_sorter(const std::string& dir, const Sources& s) {
 }
 
 void write_video_channel(const std::string& dir, const Sources& s) {
-  VectorFile<VideoChannelTopCase> file(dir, "a frame of every polygon and light at rasters 64 and 128, fogged");
+  VectorFile<VideoChannelTopCase> file(
+      dir, "a frame of every polygon and light at rasters 64 (seed interpolation) and 128 (planes), fogged");
   const Fog fog = test_fog();
   for (int log2 : {6, 7}) {
     auto in = std::make_unique<VideoChannelTopCase::Input>();
     in->raster_log2 = hls::UInt<4>(log2);
     hls::y_sorter_reset(in->memory, 1 << log2);
     for (const auto& seg : segments_of(s, log2)) hls::y_sorter_top(seg, in->memory);
-    for (const auto& p : s.polygons)
+    for (const auto& p : s.polygons) {
       for (int c = 0; c < 3; ++c) in->tables.polygon_colour[p.id.value()][c] = p.colour[c];
+      hls::PolygonEdges<hls::DefaultSegmentArith> edges;  // the planes travel with the header
+      hls::edge_generator_top(p, hls::UInt<4>(log2), edges);
+      in->tables.polygon_planes[p.id.value()] = edges.h.planes;
+    }
     for (const auto& l : s.lights)
       for (int c = 0; c < 3; ++c) in->tables.light_colour[l.id.value()][c] = l.colour[c];
     fill_fog_table(in->tables.fog, fog, false);
+    fill_fog_table(in->tables.fog_inverse, fog, true);
+    in->tables.plane_mode = log2 == 7;  // raster 64: the seed's eq. 3-4 (interp=seed)
     for (int c = 0; c < 3; ++c) {
       in->tables.fog_colour[c] = hls::UInt<8>(int(std::lround(fog.colour[c] * 255)));
       in->tables.background[c] = hls::UInt<8>(40 + 60 * c);

@@ -54,7 +54,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The kernel's scalar fields.
 int kx(double s) { return int(fd::grid_coordinate(bits_of(s)).value()); }
-int ki(double is) { return int(fd::scaled_round<1, 8, 8>(bits_of(is)).value()); }
+int ki(double is) { return int(fd::vertex_intensity(bits_of(is)).value()); }
 int kd(double ds) { return int(fd::scaled_round<1, 11, 3>(bits_of(ds)).value()); }
 int kc(double c) { return int(fd::scaled_round<255, 0, 8>(bits_of(c)).value()); }
 int kz(double z) { return int(fd::to_zfloat(bits_of(z)).bits.value()); }
@@ -379,13 +379,16 @@ void check_pow2_boundaries(int (*kernel)(double), int log2_scale, int max, bool 
 }
 
 TEST(Formatter, IntensityEveryCode) {
-  check_pow2_boundaries(ki, 8, 255, false);
-  EXPECT_EQ(ki(1.0), 255);  // 256 clamps
-  EXPECT_EQ(ki(254.5 / 256), 255);
-  EXPECT_EQ(ki(next_down(254.5 / 256)), 254);
+  // I = round(256 Is) in 0..256 (UInt<9>): full intensity is 256, so white stays 255.
+  check_pow2_boundaries(ki, 8, 256, false);
+  EXPECT_EQ(ki(1.0), 256);
+  EXPECT_EQ(ki(next_up(1.0)), 256);  // clamps
+  EXPECT_EQ(ki(2.0), 256);
+  EXPECT_EQ(ki(255.5 / 256), 256);
+  EXPECT_EQ(ki(next_down(255.5 / 256)), 255);
   for (double x : {0.0, -0.0, -1.0, -kInf, DBL_TRUE_MIN, -DBL_TRUE_MIN, 0.5 / 256, next_down(0.5 / 256)})
-    EXPECT_EQ(ki(x), ref_round_scaled(x, 1, 8, 255)) << x;
-  EXPECT_EQ(ki(kInf), 255);
+    EXPECT_EQ(ki(x), ref_round_scaled(x, 1, 8, 256)) << x;
+  EXPECT_EQ(ki(kInf), 256);
   EXPECT_EQ(ki(kNaN), 0);
 }
 
@@ -423,7 +426,7 @@ TEST(Formatter, ColourEveryCode) {
   for (int t = 0; t < 20000 * kRandomScale; ++t) {
     const double c = from_raw(rng());
     ASSERT_EQ(kc(c), ref_round_scaled(c, 255, 0, 255)) << std::hexfloat << c;
-    ASSERT_EQ(ki(c), ref_round_scaled(c, 1, 8, 255)) << std::hexfloat << c;
+    ASSERT_EQ(ki(c), ref_round_scaled(c, 1, 8, 256)) << std::hexfloat << c;
     ASSERT_EQ(kd(c), ref_round_scaled(c, 1, 11, 7)) << std::hexfloat << c;
   }
 }
@@ -510,7 +513,7 @@ ScreenLightPoint random_light(std::mt19937_64& rng) {
 void expect_vertex(const FormattedVertex& v, double xs, double ys, double zs, double is) {
   EXPECT_EQ(int(v.x.value()), ref_grid(xs));
   EXPECT_EQ(int(v.y.value()), ref_grid(ys));
-  EXPECT_EQ(int(v.i.value()), ref_round_scaled(is, 1, 8, 255));
+  EXPECT_EQ(int(v.i.value()), ref_round_scaled(is, 1, 8, 256));
   EXPECT_EQ(int(v.z.bits.value()), ref_zfloat(zs));
 }
 
@@ -622,7 +625,7 @@ int reference_output(char field, double x) {
     case 'X':
       return ref_grid(x);
     case 'I':
-      return ref_round_scaled(x, 1, 8, 255);
+      return ref_round_scaled(x, 1, 8, 256);
     case 'D':
       return ref_round_scaled(x, 1, 11, 7);
     case 'C':

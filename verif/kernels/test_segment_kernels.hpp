@@ -87,6 +87,9 @@ struct VideoRig {
   std::unique_ptr<VideoTables<Q>> tables = std::make_unique<VideoTables<Q>>();
   std::unique_ptr<LineBuffer<Q>> line = std::make_unique<LineBuffer<Q>>();
   std::unique_ptr<PixelLine> pixels = std::make_unique<PixelLine>();
+  // These tests hand-build segments that carry I and Z at their ends: the seed's interpolation
+  // (eq. 3-4, `interp=seed`); the planes' mode is the engines' (test_attribute_accuracy.cpp).
+  VideoRig() { tables->plane_mode = false; }
 };
 
 // Parts of SegmentKernels.Digest defined with their tests: the video half

@@ -462,7 +462,7 @@ RawSegment random_raw_segment(Rng& rng, int line, int sources) {
                                            : between(rng, 0, 300 * one);
     s.xr[r] = std::min(s.xl[r] + width, 8000 * one);  // within X's range (+-2^13)
   }
-  const std::int64_t imax = (std::int64_t(1) << Intensity::width) - 1;
+  const std::int64_t imax = std::int64_t(256) << kFi;  // full intensity: I in [0, 256]
   s.il = below(rng, 4) == 0 ? (below(rng, 2) ? imax : 0) : below(rng, imax + 1);
   s.ir = s.light ? s.il : below(rng, 4) == 0 ? (below(rng, 2) ? imax : 0) : below(rng, imax + 1);
   const int e = int(between(rng, 120, 134));

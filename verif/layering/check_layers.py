@@ -32,14 +32,15 @@ ALLOWED = {
                          "hls/formatter"},                                     # stage C twin
     "cmodel/image": {"cmodel/common"},
     "cmodel/engine": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/image"},
+    "cmodel/pixel": {"hls/types", "hls/formatter", "hls/pixel"},            # D, E: shared plane twin
     "cmodel/reference": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                          "cmodel/image", "cmodel/engine", "hls/types", "hls/formatter"},
     "cmodel/segment": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
-                       "cmodel/image", "cmodel/engine", "hls/types", "hls/formatter", "hls/pixel",
-                       "hls/segment"},                                         # stage D
+                       "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
+                       "hls/pixel", "hls/segment"},                                         # stage D
     "cmodel/quadtree": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
-                        "cmodel/image", "cmodel/engine", "hls/types", "hls/formatter", "hls/pixel",
-                        "hls/quadtree"},                                       # stage E
+                        "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
+                        "hls/pixel", "hls/quadtree"},                                       # stage E
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree"},     # every engine
     "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",

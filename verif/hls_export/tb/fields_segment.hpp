@@ -18,13 +18,20 @@ struct Fields<hls::Edge<P>> {
   }
 };
 template <class P>
+struct Fields<hls::AttributePlanes<P>> {
+  template <class V, class R>
+  static void visit(V& v, R& r) {
+    v(r.d, "d"), v(r.e, "e"), v(r.f, "f"), v(r.w_exponent, "w_exponent");
+  }
+};
+template <class P>
 struct Fields<hls::PolygonHeader<P>> {
   template <class V, class R>
   static void visit(V& v, R& r) {
     v(r.id, "id"), v(r.colour, "colour"), v(r.opaque, "opaque"), v(r.protect, "protect");
     v(r.area_code, "area_code"), v(r.twice_area, "twice_area"), v(r.row_first, "row_first");
     v(r.row_last, "row_last"), v(r.segments_even, "segments_even"), v(r.segments_odd, "segments_odd");
-    v(r.left_count, "left_count"), v(r.right_count, "right_count");
+    v(r.left_count, "left_count"), v(r.right_count, "right_count"), v(r.planes, "planes");
   }
 };
 template <class P>

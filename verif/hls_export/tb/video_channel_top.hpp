@@ -22,7 +22,8 @@ struct Fields<hls::VideoTables<P>> {
   template <class V, class R>
   static void visit(V& v, R& r) {
     v(r.polygon_colour, "polygon_colour"), v(r.light_colour, "light_colour"), v(r.fog, "fog");
-    v(r.fog_colour, "fog_colour"), v(r.background, "background");
+    v(r.fog_colour, "fog_colour"), v(r.background, "background"), v(r.plane_mode, "plane_mode");
+    v(r.polygon_planes, "polygon_planes"), v(r.fog_inverse, "fog_inverse");
   }
 };
 template <>
