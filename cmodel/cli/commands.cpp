@@ -12,6 +12,7 @@ void Commands::add_to(CLI::App& app) {
   compare.add_to(app);
   sweep.add_to(app);
   arch.add_to(app);
+  stress.add_to(app);
   // Listed for --help; `cig cosim ...` never reaches the parser (main.cpp forwards it to cig-cosim).
   app.add_subcommand("cosim",
                      "co-simulate the quadtree RTL against the kernels and the architecture model (runs cig-cosim; "
@@ -37,6 +38,7 @@ int Commands::run() {
   if (*compare.sub) return compare.run();
   if (*sweep.sub) return sweep.run();
   if (*arch.sub) return arch.run();
+  if (*stress.sub) return stress.run();
   return 0;
 }
 

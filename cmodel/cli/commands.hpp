@@ -9,6 +9,7 @@
 #include "cli/polys_command.hpp"
 #include "cli/raster_command.hpp"
 #include "cli/render_command.hpp"
+#include "cli/stress_command.hpp"
 #include "cli/sweep_command.hpp"
 
 namespace cig::cli {
@@ -20,6 +21,7 @@ struct Commands {
   CompareCommand compare;
   SweepCommand sweep;
   ArchCommand arch;
+  StressCommand stress;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

@@ -59,7 +59,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
       ScreenVertex sv;
       sv.xs = v[0].number(-1, 1);
       sv.ys = v[1].number(-1, 1);
-      sv.zs = v[2].number(kMinScreenDepth, kMaxScreenDepth);
+      sv.zs = v[2].number(kMinListDepth, kMaxListDepth);
       sv.is = v[3].number(0, 1);
       sp.vertices.push_back(sv);
       xy.emplace_back(sv.xs, sv.ys);
@@ -78,7 +78,7 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
       c.array_size(3, 3);
       lp.xs = c[0].number(-1, 1);
       lp.ys = c[1].number(-1, 1);
-      lp.zs = c[2].number(kMinScreenDepth, kMaxScreenDepth);
+      lp.zs = c[2].number(kMinListDepth, kMaxListDepth);
       lp.ds = l.at("diameter").number(0, 1);
       if (auto col = l.find("colour")) lp.colour = col->colour();
       lp.intensity = l.find("intensity") ? l.at("intensity").number(0, 1) : 1.0;

@@ -37,6 +37,9 @@ constexpr double kMaxDistance = 1e9;                           // fog start and 
 constexpr double kMaxLightDiameter = 1e5;                      // light-point diameter, metres
 // Screen depths of a polygon list: what the geometric processor can produce from the ranges above.
 constexpr double kMinScreenDepth = kMinNear, kMaxScreenDepth = kMaxDistance;
+// Polygon lists (cig-polys) may hold any depth the formatter can meet and more: from below the
+// e8m7 range (2^-127 = 5.9e-39) to beyond it (6.8e38), so stress lists reach both saturations.
+constexpr double kMinListDepth = 1e-40, kMaxListDepth = 1e41;
 // A model file larger than this is rejected before it is read (a setting: --max-model-mb).
 constexpr long long kDefaultMaxModelBytes = 64ll << 20;
 

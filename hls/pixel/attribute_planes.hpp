@@ -96,6 +96,12 @@ struct PlaneFixedArith {
   // and saturated to |.| < 2^V; F, the value at sample (0, 0), from the ROUNDED gradients so that
   // the mean residual over the vertices is at most half an LSB: F = round((sum v - D si - E sj) /
   // n). nz != 0 (the caller drops zero-area pieces).
+  //
+  // A saturated gradient means a value swing of more than 2^V per sample, more than the whole value
+  // range: a sliver of almost no area (on airfield frame 8 a terrain triangle snapped to 1 unit^2,
+  // whose W plane then reached W <= 0, full fog, at its one covered sample). Such a plane is no
+  // plane: it becomes flat, D = E = 0, F = round(sum v / n), the mean of the vertex values, so a
+  // sample's value stays inside the vertices' range whatever the polygon's shape.
   static void plane(const NewellSum& nx, const NewellSum& ny, const Int<34>& nz, const SumValue& sum_v,
                     const Int<24>& si7, const Int<24>& sj7, int n, int ls, Gradient& d_out, Gradient& e_out,
                     Param& f_out) {
@@ -108,6 +114,10 @@ struct PlaneFixedArith {
         fixed_div<GradientFormat>(Fixed<V + 26, V + 26>::from_raw(nys), Fixed<34, 34>::from_raw(nz));
     d_out = dg.raw();
     e_out = eg.raw();
+    if (saturated(d_out) || saturated(e_out)) {
+      d_out = Gradient(0);
+      e_out = Gradient(0);
+    }
     // numerator in units of 2^-(G + 7): sum v * 2^(G + 7) - D_raw si7 - E_raw sj7 (exact).
     const Int<V + 12 + G> sv = shl<G + 7>(sum_v);
     const Int<63> num = Int<63>(sv.value() - d_out.value() * si7.value() - e_out.value() * sj7.value());
@@ -115,6 +125,10 @@ struct PlaneFixedArith {
     const OffsetFormat f =
         fixed_div<OffsetFormat>(Fixed<63, 63 - G - 7>::from_raw(num), Fixed<5, 5>::from_raw(Int<5>(n)));
     f_out = f.raw();
+  }
+
+  static bool saturated(const Gradient& g) {
+    return g.value() == Gradient::max_value || g.value() == Gradient::min_value;
   }
 
   // The value at sample (di, dj) from the value f at sample (0, 0) of a window or of the lattice,
@@ -160,6 +174,25 @@ struct AttributePlanes {
   typename P::Param f[kPlaneParams];
   Int<10> w_exponent;
 };
+
+// The fan triangle (0, k, k + 1) of largest area of an n-gon (half-unit positions): k, or 0 when
+// every fan triangle is degenerate. A polygon that snapping made non-convex takes its planes from
+// it (the quadtree's span-piece setup and the segment processor's edge generator alike).
+inline int largest_fan_triangle(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int n) {
+  int best = 0;
+  std::int64_t best_area = 0;
+  for (int k = 1; k < kMaxVertices - 1; ++k) {
+    if (k + 1 >= n) break;
+    std::int64_t a =
+        std::int64_t(hx[k] - hx[0]) * (hy[k + 1] - hy[0]) - std::int64_t(hy[k] - hy[0]) * (hx[k + 1] - hx[0]);
+    if (a < 0) a = -a;
+    if (a > best_area) {
+      best_area = a;
+      best = k;
+    }
+  }
+  return best;
+}
 
 // Fits the planes of I and W through vertices idx[0..m) (half-unit positions hx, hy; values vi,
 // vz; nz = twice the signed area of that vertex cycle, != 0; e_min = the polygon's nearest

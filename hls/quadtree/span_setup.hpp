@@ -31,8 +31,7 @@ void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece&
                                QuadWindow<P>& root, bool& ok) {
   const int n = int(in.n.value());
   int hx[kMaxVertices], hy[kMaxVertices];
-  int e_min = 255, best = -1;
-  std::int64_t best_area = 0;
+  int e_min = 255;
   for (int k = 0; k < kMaxVertices; ++k) {
     hx[k] = 2 * int(in.v[k].x.value());
     hy[k] = 2 * int(in.v[k].y.value());
@@ -41,15 +40,8 @@ void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece&
     if (k >= n) break;
     const int e = P::depth_exponent(in.v[k].z);
     if (e < e_min) e_min = e;
-    if (k < 1 || k + 1 >= n) continue;
-    std::int64_t a =
-        std::int64_t(hx[k] - hx[0]) * (hy[k + 1] - hy[0]) - std::int64_t(hy[k] - hy[0]) * (hx[k + 1] - hx[0]);
-    if (a < 0) a = -a;
-    if (a > best_area) {
-      best_area = a;
-      best = k;
-    }
   }
+  const int best = largest_fan_triangle(hx, hy, n);
   ok = best > 0;
   if (!ok) return;
   int idx[kQuadMaxEdges] = {0, best, best + 1, 0, 0, 0, 0, 0};

@@ -58,7 +58,7 @@ struct FixedSegmentArith {
       vz[k] = in.v[k].z;
       idx[k] = 0;
     }
-    const int m = fan_triangle ? largest_fan_triangle(hx, hy, n, idx) : distinct_vertices(hx, hy, n, idx);
+    const int m = fan_triangle ? fan_triangle_vertices(hx, hy, n, idx) : distinct_vertices(hx, hy, n, idx);
     int e_min = 255;
     for (int k = 0; k < kMaxVertices; ++k) {
       if (k >= (fan_triangle ? n : m)) break;
@@ -90,22 +90,11 @@ struct FixedSegmentArith {
     }
     return m;
   }
-  // The fan triangle (0, k, k + 1) of largest area (the quadtree's span-piece setup); 0 if none.
-  static int largest_fan_triangle(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int n,
-                                  int (&idx)[kMaxVertices]) {
-    int best = -1;
-    std::int64_t best_area = 0;
-    for (int k = 1; k < kMaxVertices - 1; ++k) {
-      if (k + 1 >= n) break;
-      std::int64_t a =
-          std::int64_t(hx[k] - hx[0]) * (hy[k + 1] - hy[0]) - std::int64_t(hy[k] - hy[0]) * (hx[k + 1] - hx[0]);
-      if (a < 0) a = -a;
-      if (a > best_area) {
-        best_area = a;
-        best = k;
-      }
-    }
-    if (best < 0) return 0;
+  // The fan triangle (0, k, k + 1) of largest area as a vertex cycle; 0 vertices if none.
+  static int fan_triangle_vertices(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int n,
+                                   int (&idx)[kMaxVertices]) {
+    const int best = ::cig::hls::largest_fan_triangle(hx, hy, n);
+    if (best == 0) return 0;
     idx[0] = 0;
     idx[1] = best;
     idx[2] = best + 1;
