@@ -16,6 +16,7 @@ test_packages=(
   libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
   assimp-testmodels               # real OBJ models for the loader tests
   verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
+  gnuplot-nox                     # `cig sweep --plot`: the run-time / error frontier as a PNG
 )
 case "${1:-all}" in
   render) packages=("${render_packages[@]}") ;;

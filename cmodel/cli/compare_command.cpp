@@ -27,6 +27,7 @@ void CompareCommand::add_to(CLI::App& app) {
   sub->add_option(
       "--reference", reference,
       "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
+  add_reference_spp(sub, reference_spp);
   sub->add_option("--out", out_dir, "write difference images (|error| x 8) here");
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub, true);
@@ -139,7 +140,7 @@ nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share,
 
 int CompareCommand::run() {
   const EngineOptions eo = engine.options();
-  EngineOptions ro = reference_options(reference);
+  EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = eo.fan_split;  // the reference follows the engine's polygon split
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());

@@ -13,7 +13,7 @@ namespace cig::cli {
 struct CompareCommand {
   CLI::App* sub = nullptr;
   std::string input, out_dir, report_file, frames_text, reference = "float";
-  int frame_k = -1, channel = -1;
+  int frame_k = -1, channel = -1, reference_spp = 16;
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;
   ModelLimitArgs model_limit;

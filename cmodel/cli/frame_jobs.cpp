@@ -10,7 +10,7 @@
 
 namespace cig::cli {
 
-EngineOptions reference_options(const std::string& reference) {
+EngineOptions reference_options(const std::string& reference, int samples_per_pixel) {
   // float: the ground truth; float-snap: vertices snapped to the formatter grid (the engines'
   // coverage); float-snap-priority: that, with visibility by list order as the engines have it.
   if (reference != "float" && reference != "float-snap" && reference != "float-snap-priority")
@@ -18,6 +18,7 @@ EngineOptions reference_options(const std::string& reference) {
   EngineOptions o;
   o.snap = reference != "float";
   if (reference == "float-snap-priority") o.params["visibility"] = "priority";
+  if (samples_per_pixel != 16) o.params["spp"] = std::to_string(samples_per_pixel);
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
@@ -18,8 +19,15 @@
 
 namespace cig::cli {
 
-// --reference float | float-snap: the float engine, unsnapped or snapped to the formatter grid.
-EngineOptions reference_options(const std::string& reference);
+// --reference float | float-snap | float-snap-priority: the float engine, unsnapped or snapped to
+// the formatter grid, z-buffered or by list order; --reference-spp: its samples per pixel (16 as
+// the engines, or 64 / 256 for a ground truth finer than any engine).
+EngineOptions reference_options(const std::string& reference, int samples_per_pixel = 16);
+// Adds --reference-spp to a command.
+inline void add_reference_spp(CLI::App* app, int& spp) {
+  app->add_option("--reference-spp", spp, "reference samples per pixel: 1, 4, 16 (default), 64, 256")
+      ->check(CLI::IsMember({1, 4, 16, 64, 256}));
+}
 
 // The images of an input: a polygon list is one image; a scene gives frames A..B (--frames A:B,
 // --frame K, or frame 0) x channels (all, or --channel C). Checked when loaded (InputError).

@@ -1,21 +1,31 @@
-// cig sweep INPUT --engine E --vary KEY=V1,V2,... [--engine-opt K=V]... [--reference float|float-snap]
-//                 [--frame K | --frames A:B] [--channel C] [--repeat R] [--report FILE]
-// Run time against error: for each value V of the engine option KEY (any engine, any option the
-// engine accepts: a format, an architecture, ...), renders the chosen images (a polygon list, or a
-// scene's frames x channels) with the engine, times the engine alone (its render call, best of R
-// repeats per image, one thread), compares its images with the reference's and prints one row:
-// the value, ms per frame (the engine's time for all chosen channels of a frame), PSNR over all
-// pixels, the largest absolute error of any colour channel, the pixels off by more than 2 LSB and
-// the pixels whose polygon id differs. Every option and value is checked before any work; nothing
-// is printed or written until every image is done.
+// cig sweep INPUT --engine E --vary KEY=V1,V2,... [--vary KEY2=...]... [--engine-opt K=V]...
+//                 [--reference float|float-snap|float-snap-priority] [--reference-spp N]
+//                 [--frame K | --frames A:B] [--channel C] [--repeat R] [--report FILE] [--plot FILE.png]
+// Run time against error: for every combination of the values of the varied engine options (any
+// engine, any option it accepts: samples per pixel, a format, an architecture, ...), renders the
+// chosen images (a polygon list, or a scene's frames x channels) with the engine, times the engine
+// alone (its render call, best of R repeats per image, one thread), adds up the hardware time its
+// model gives (the segment processor's seed timings, the quadtree's cycles at its clock), compares
+// its images with the reference's and prints one row: the combination, ms per frame of the model
+// and of the modelled hardware, PSNR over all pixels, the largest absolute error of any colour
+// channel, the pixels off by more than 2 LSB, the pixels whose polygon id differs, and whether the
+// row is on the Pareto frontier of time against PSNR. --plot draws that frontier with gnuplot.
+// Every option and value is checked before any work; nothing is printed or written until every
+// image is done.
 #include "cli/sweep_command.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "cli/frame_jobs.hpp"
 #include "common/error.hpp"
@@ -25,17 +35,21 @@
 namespace cig::cli {
 
 void SweepCommand::add_to(CLI::App& app) {
-  sub = app.add_subcommand("sweep", "engine run time against image error over the values of one engine option");
+  sub = app.add_subcommand("sweep", "engine run time against image error over combinations of engine options");
   sub->add_option("input", input, "scene or polygon list")->required();
-  sub->add_option("--vary", vary, "KEY=V1,V2,...: the engine option to vary and its values")->required();
+  sub->add_option("--vary", vary, "KEY=V1,V2,...: an engine option to vary and its values (repeatable)")
+      ->required()
+      ->allow_extra_args(false);
   frame_opt = sub->add_option("--frame", frame_k, "frame number (scenes; default 0)");
   sub->add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   sub->add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
   sub->add_option(
       "--reference", reference,
       "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
+  add_reference_spp(sub, reference_spp);
   sub->add_option("--repeat", repeat, "time each image R times, keep the best (default 3)")->check(CLI::Range(1, 1000));
   sub->add_option("--report", report_file, "write a JSON report");
+  sub->add_option("--plot", plot_file, "write PSNR against time, Pareto points marked, as a PNG (gnuplot)");
   engine.add_to(sub);
   model_limit.add_to(sub);
   sub->get_option("--engine")->required();
@@ -67,35 +81,62 @@ Varied parse_vary(const std::string& text) {
   return v;
 }
 
+// One point of the sweep: a value for every varied key.
+struct Combination {
+  std::map<std::string, std::string> params;
+  std::string label;  // "k1=v1 k2=v2"
+};
+
+// Every combination, the first key varying slowest; keys distinct and not set by --engine-opt.
+std::vector<Combination> combinations(const std::vector<Varied>& varied, const EngineOptions& base) {
+  std::vector<Combination> out(1);
+  std::set<std::string> keys;
+  for (const Varied& v : varied) {
+    if (!keys.insert(v.key).second) throw InputError("", "--vary", "'" + v.key + "' is varied twice");
+    if (base.params.count(v.key))
+      throw InputError("", "--vary", "'" + v.key + "' is also set by --engine-opt (or a shorthand)");
+    std::vector<Combination> next;
+    for (const Combination& c : out)
+      for (const std::string& value : v.values) {
+        Combination d = c;
+        d.params[v.key] = value;
+        d.label += (d.label.empty() ? "" : " ") + v.key + "=" + value;
+        next.push_back(d);
+      }
+    out = std::move(next);
+  }
+  return out;
+}
+
 struct SweepRow {
-  std::string value;
-  double engine_ms = 0;  // sum over images of the best time
+  std::string label;
+  double engine_ms = 0;    // sum over images of the best time
+  double hardware_ms = 0;  // sum over images of the modelled hardware time
+  bool has_hardware = true;
+  bool pareto = false;
   ComparisonTotals totals;
 };
 
-}  // namespace
-
-namespace {
-
-// One engine per value of the varied option (each checked against the frames by run()).
+// One engine per combination (each checked against the frames by run()).
 std::vector<std::unique_ptr<RasterEngine>> make_engines(const SweepCommand& c, const EngineOptions& base,
-                                                        const Varied& varied) {
+                                                        const std::vector<Combination>& combos) {
   std::vector<std::unique_ptr<RasterEngine>> engines;
-  for (const auto& value : varied.values) {
+  for (const Combination& combo : combos) {
     EngineOptions o = base;
-    o.params[varied.key] = value;
+    for (const auto& [k, v] : combo.params) o.params[k] = v;
     try {
       engines.push_back(make_engine(c.engine.engine, o));
-    } catch (const InputError& e) { throw InputError("", "--vary", varied.key + "=" + value + ": " + e.rule()); }
+    } catch (const InputError& e) { throw InputError("", "--vary", combo.label + ": " + e.rule()); }
   }
   return engines;
 }
 
-// Image by image: the reference once, then every value R times (timed: the render call alone).
-std::vector<SweepRow> measure(const FrameJobs& jobs, const Varied& varied, const EngineOptions& ro,
+// Image by image: the reference once, then every combination R times (timed: the render call
+// alone).
+std::vector<SweepRow> measure(const FrameJobs& jobs, const std::vector<Combination>& combos, const EngineOptions& ro,
                               std::vector<std::unique_ptr<RasterEngine>>& engines, int repeat) {
-  std::vector<SweepRow> rows(varied.values.size());
-  for (std::size_t v = 0; v < rows.size(); ++v) rows[v].value = varied.values[v];
+  std::vector<SweepRow> rows(combos.size());
+  for (std::size_t v = 0; v < rows.size(); ++v) rows[v].label = combos[v].label;
   auto ref = make_engine("float", ro);
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const ScreenFrame f = jobs.screen_frame(k);
@@ -109,6 +150,8 @@ std::vector<SweepRow> measure(const FrameJobs& jobs, const Varied& varied, const
         best = std::min(best, ms_since(t0));
       }
       rows[v].engine_ms += best;
+      if (got.report.contains("hardware_ms")) rows[v].hardware_ms += got.report["hardware_ms"].get<double>();
+      else rows[v].has_hardware = false;
       rows[v].totals.add(compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out));
     }
     if (jobs.size() > 1) std::cerr << "\rcig: sweep image " << k + 1 << "/" << jobs.size() << std::flush;
@@ -117,17 +160,111 @@ std::vector<SweepRow> measure(const FrameJobs& jobs, const Varied& varied, const
   return rows;
 }
 
+// The time the frontier is drawn against: the modelled hardware's when every row has one (the
+// quantity a hardware architect trades), else the C model's.
+bool frontier_uses_hardware(const std::vector<SweepRow>& rows) {
+  return std::all_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.has_hardware; });
+}
+double frontier_time(const SweepRow& r, bool hardware) { return hardware ? r.hardware_ms : r.engine_ms; }
+
+// Pareto: no other row is at least as fast and at least as accurate, and better in one.
+void mark_pareto(std::vector<SweepRow>& rows) {
+  const bool hw = frontier_uses_hardware(rows);
+  for (SweepRow& a : rows) {
+    a.pareto = true;
+    for (const SweepRow& b : rows) {
+      const double ta = frontier_time(a, hw), tb = frontier_time(b, hw);
+      const double pa = a.totals.all.psnr(), pb = b.totals.all.psnr();
+      if (&a != &b && tb <= ta && pb >= pa && (tb < ta || pb > pa)) a.pareto = false;
+    }
+  }
+}
+
 nlohmann::ordered_json to_json(const SweepRow& r, const FrameJobs& jobs) {
   const ImageError& e = r.totals.all;
-  return {{"value", r.value},
-          {"ms_per_frame", r.engine_ms / jobs.frames()},
-          {"ms_per_image", r.engine_ms / double(jobs.size())},
-          {"psnr", e.psnr()},
-          {"psnr_min", r.totals.min_psnr},
-          {"max_abs", {e.max_abs[0], e.max_abs[1], e.max_abs[2]}},
-          {"pixels_over_2lsb", e.pixels_over_2lsb},
-          {"ids_differ", r.totals.ids_differ},
-          {"pixels", e.pixels}};
+  nlohmann::ordered_json j = {{"value", r.label},
+                              {"ms_per_frame", r.engine_ms / jobs.frames()},
+                              {"ms_per_image", r.engine_ms / double(jobs.size())}};
+  if (r.has_hardware) j["hardware_ms_per_frame"] = r.hardware_ms / jobs.frames();
+  j["psnr"] = e.psnr();
+  j["psnr_min"] = r.totals.min_psnr;
+  j["max_abs"] = {e.max_abs[0], e.max_abs[1], e.max_abs[2]};
+  j["pixels_over_2lsb"] = e.pixels_over_2lsb;
+  j["ids_differ"] = r.totals.ids_differ;
+  j["pixels"] = e.pixels;
+  j["pareto"] = r.pareto;
+  return j;
+}
+
+std::string table_text(const SweepCommand& c, const std::vector<SweepRow>& rows, const FrameJobs& jobs) {
+  std::size_t width = 6;
+  for (const SweepRow& r : rows) width = std::max(width, r.label.size());
+  std::ostringstream t;
+  t << "cig sweep: engine " << c.engine.engine << " against " << c.reference << " (" << c.reference_spp
+    << " samples per pixel) on " << c.input << "\n  " << jobs.frames() << " frame(s) x " << jobs.channels()
+    << " channel(s) = " << jobs.size() << " image(s); engine time per image: best of " << c.repeat
+    << "; * = Pareto frontier of " << (frontier_uses_hardware(rows) ? "hardware" : "model") << " time against PSNR\n"
+    << std::left << std::setw(int(width)) << "options" << std::right
+    << "  ms/frame  hw ms/frame     PSNR  max abs   >2 LSB  ids differ\n";
+  for (const SweepRow& r : rows) {
+    const ImageError& e = r.totals.all;
+    std::ostringstream hw;
+    if (r.has_hardware) hw << std::fixed << std::setprecision(2) << r.hardware_ms / jobs.frames();
+    else hw << "-";
+    t << std::left << std::setw(int(width)) << r.label << std::right << std::fixed << std::setprecision(2)
+      << std::setw(10) << r.engine_ms / jobs.frames() << std::setw(13) << hw.str() << std::setw(9) << e.psnr()
+      << std::setw(9) << r.totals.max_abs() << std::setw(9) << e.pixels_over_2lsb << std::setw(12)
+      << r.totals.ids_differ << (r.pareto ? " *" : "") << "\n";
+  }
+  return t.str();
+}
+
+// --plot: checked before any work (gnuplot present, the file writable).
+void check_plot(const std::string& plot_file) {
+  if (plot_file.empty()) return;
+  check_output_file(plot_file, "--plot");
+  if (std::system("gnuplot --version > /dev/null 2>&1") != 0)
+    throw InputError("", "--plot", "needs gnuplot (Debian package gnuplot-nox; tools/deps.sh installs it)");
+}
+
+// PSNR against time, every row a point, the Pareto rows joined and labelled; written to a
+// temporary file first, so a failed plot leaves no partial output.
+void write_plot(const std::string& plot_file, const std::vector<SweepRow>& rows, const FrameJobs& jobs,
+                const std::string& title) {
+  const bool hw = frontier_uses_hardware(rows);
+  const auto dir = std::filesystem::temp_directory_path() / ("cig-sweep-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::vector<const SweepRow*> sorted;
+  for (const SweepRow& r : rows) sorted.push_back(&r);
+  std::sort(sorted.begin(), sorted.end(),
+            [&](const SweepRow* a, const SweepRow* b) { return frontier_time(*a, hw) < frontier_time(*b, hw); });
+  {
+    std::ofstream all(dir / "all.dat"), front(dir / "pareto.dat");
+    for (const SweepRow* r : sorted) {
+      const double t = frontier_time(*r, hw) / jobs.frames(), p = r->totals.all.psnr();
+      all << t << " " << p << "\n";
+      if (r->pareto) front << t << " " << p << " \"" << r->label << "\"\n";
+    }
+  }
+  const std::string png = (dir / "plot.png").string();
+  std::ofstream(dir / "plot.gp") << "set terminal png size 1000,640\nset output '" << png << "'\nset title \"" << title
+                                 << "\" noenhanced\nset xlabel '" << (hw ? "modelled hardware" : "C model")
+                                 << " ms per frame'\nset ylabel 'PSNR against the reference (dB)'\nset logscale x\n"
+                                 << "set grid\nset key bottom right\nplot '" << (dir / "all.dat").string()
+                                 << "' using 1:2 with points pt 7 ps 1 title 'configurations', '"
+                                 << (dir / "pareto.dat").string()
+                                 << "' using 1:2 with linespoints pt 6 ps 2 lw 2 title 'Pareto frontier', '"
+                                 << (dir / "pareto.dat").string()
+                                 << "' using 1:2:3 with labels offset 1,-1 left font ',8' noenhanced notitle\n";
+  const int rc = std::system(("gnuplot '" + (dir / "plot.gp").string() + "' > /dev/null 2>&1").c_str());
+  if (rc != 0 || !std::filesystem::exists(png)) {
+    std::filesystem::remove_all(dir);
+    throw InputError("", "--plot", "gnuplot failed to draw the plot");
+  }
+  const auto parent = std::filesystem::path(plot_file).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  std::filesystem::copy_file(png, plot_file, std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
@@ -135,54 +272,45 @@ nlohmann::ordered_json to_json(const SweepRow& r, const FrameJobs& jobs) {
 int SweepCommand::run() {
   // Everything that can be wrong is checked before any work.
   const EngineOptions base = engine.options();
-  const Varied varied = parse_vary(vary);
-  if (base.params.count(varied.key))
-    throw InputError("", "--vary", "'" + varied.key + "' is also set by --engine-opt (or a shorthand)");
-  EngineOptions ro = reference_options(reference);
+  std::vector<Varied> varied;
+  for (const std::string& v : vary) varied.push_back(parse_vary(v));
+  const std::vector<Combination> combos = combinations(varied, base);
+  EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = base.fan_split;  // the reference follows the engines' polygon split
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
-  std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, varied);
+  std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, combos);
   for (std::size_t v = 0; v < engines.size(); ++v) {
     try {
       jobs.check_capacity(*engines[v]);
-    } catch (const InputError& e) {
-      throw InputError(e.file(), "--vary", varied.key + "=" + varied.values[v] + ": " + e.rule());
-    }
+    } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
   }
   if (!report_file.empty()) check_output_file(report_file, "--report");
-  const std::vector<SweepRow> rows = measure(jobs, varied, ro, engines, repeat);
+  check_plot(plot_file);
+  std::vector<SweepRow> rows = measure(jobs, combos, ro, engines, repeat);
+  mark_pareto(rows);
 
-  const int width = int(std::max<std::size_t>(varied.key.size(), 6));
-  std::ostringstream table;
-  table << "cig sweep: engine " << engine.engine << ", " << varied.key << " in {";
-  for (std::size_t v = 0; v < rows.size(); ++v) table << (v ? ", " : "") << rows[v].value;
-  table << "} against " << reference << " on " << input << "\n"
-        << "  " << jobs.frames() << " frame(s) x " << jobs.channels() << " channel(s) = " << jobs.size()
-        << " image(s); engine time per image: best of " << repeat << "\n"
-        << std::left << std::setw(width) << varied.key << std::right
-        << "  ms/frame     PSNR  max abs   >2 LSB  ids differ\n";
   nlohmann::ordered_json rep;
   rep["command"] = "sweep";
   rep["input"] = input;
   rep["engine"] = engine.engine;
   rep["engine_options"] = base.params;
-  rep["vary"] = varied.key;
+  rep["vary"] = vary;
   rep["reference"] = reference;
+  rep["reference_spp"] = reference_spp;
   rep["frames"] = jobs.frames();
   rep["channels"] = jobs.channels();
   rep["images"] = jobs.size();
   rep["repeat"] = repeat;
+  rep["frontier_time"] = frontier_uses_hardware(rows) ? "hardware" : "model";
   rep["rows"] = nlohmann::ordered_json::array();
-  for (const SweepRow& r : rows) {
-    const ImageError& e = r.totals.all;
-    table << std::left << std::setw(width) << r.value << std::right << std::fixed << std::setprecision(2)
-          << std::setw(10) << r.engine_ms / jobs.frames() << std::setw(9) << e.psnr() << std::setw(9)
-          << r.totals.max_abs() << std::setw(9) << e.pixels_over_2lsb << std::setw(12) << r.totals.ids_differ << "\n";
-    rep["rows"].push_back(to_json(r, jobs));
-  }
+  for (const SweepRow& r : rows) rep["rows"].push_back(to_json(r, jobs));
+  if (!plot_file.empty())
+    write_plot(plot_file, rows, jobs,
+               "cig sweep " + engine.engine + " on " + input + " against " + reference + " at " +
+                   std::to_string(reference_spp) + " samples per pixel");
   if (!report_file.empty()) write_text_file(report_file, report_text(rep));
-  std::cout << table.str();
+  std::cout << table_text(*this, rows, jobs);
   return 0;
 }
 

@@ -157,6 +157,7 @@ class QuadPipeline {
                            {"stall_cycles", ss},
                            {"utilisation", st.cycles > 0 ? double(sb) / (double(st.cycles) * double(pes)) : 0.0}});
     }
+    rep["hardware_ms"] = frame_ms;  // the modelled hardware time of the frame (cig sweep)
     rep["cycles"] = {{"frame", st.cycles},
                      {"per_piece", pieces == 0 ? 0.0 : double(st.cycles) / double(pieces)},
                      {"clock_mhz", options_.clock_mhz},

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "reference/reference_raster.hpp"
+#include "reference/sample_lattice.hpp"
 
 namespace cig {
 
@@ -11,13 +12,24 @@ class FloatEngine : public RasterEngine {
  public:
   explicit FloatEngine(const EngineOptions& o) : options_(o) {
     for (const auto& [key, value] : o.params) {
+      if (key == "spp") {
+        side_ = samples_per_side(value);
+        continue;
+      }
       if (key != "visibility")
-        throw InputError("", "--engine-opt",
-                         "engine 'float' takes no option '" + key + "' (it takes visibility=depth|priority)");
+        throw InputError(
+            "", "--engine-opt",
+            "engine 'float' takes no option '" + key + "' (it takes visibility=depth|priority, spp=1|4|16|64|256)");
       if (value != "depth" && value != "priority")
         throw InputError("", "--engine-opt", "visibility='" + value + "' is neither depth nor priority");
       visibility_ = value == "priority" ? Visibility::kPriority : Visibility::kDepth;
     }
+  }
+  // spp = side^2 samples per pixel, side 1..16 (reference/sample_lattice.hpp).
+  static int samples_per_side(const std::string& spp) {
+    for (int side = 1; side <= kMaxReferenceSamplesPerSide; side *= 2)
+      if (spp == std::to_string(side * side)) return side;
+    throw InputError("", "--engine-opt", "spp='" + spp + "' is none of 1, 4, 16, 64, 256 (samples per pixel)");
   }
   const char* name() const override { return "float"; }
 
@@ -25,11 +37,12 @@ class FloatEngine : public RasterEngine {
   EngineRun render_frame(const ScreenFrame& frame) override {
     ReferenceStats st;
     EngineRun run;
-    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_);
-    else run.out = render_reference(frame, st, visibility_);
+    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_);
+    else run.out = render_reference(frame, st, visibility_, side_);
     run.report["engine"] = "float";
     run.report["snapped"] = options_.snap;
     run.report["visibility"] = visibility_ == Visibility::kPriority ? "priority" : "depth";
+    run.report["samples_per_pixel"] = side_ * side_;
     run.report["polygons"] = st.polygons;
     run.report["polygons_empty"] = st.polygons_empty;
     run.report["samples_covered"] = st.samples_covered;
@@ -44,6 +57,7 @@ class FloatEngine : public RasterEngine {
  private:
   EngineOptions options_;
   Visibility visibility_ = Visibility::kDepth;
+  int side_ = kSamplesPerSide;
 };
 
 }  // namespace

@@ -128,16 +128,18 @@ struct StripBins {
 namespace {
 
 RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
-                   Visibility visibility);
+                   Visibility visibility, int side);
 
 }  // namespace
 
-RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility) {
-  return render(frame, frame, stats, visibility);
+RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility,
+                             int samples_per_side) {
+  return render(frame, frame, stats, visibility, samples_per_side);
 }
 
-RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility) {
-  return render(snap_to_formatter_grid(exact), exact, stats, visibility);
+RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility,
+                                     int samples_per_side) {
+  return render(snap_to_formatter_grid(exact), exact, stats, visibility, samples_per_side);
 }
 
 namespace {
@@ -147,15 +149,15 @@ namespace {
 class ReferenceFrame {
  public:
   ReferenceFrame(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
-                 Visibility visibility)
+                 Visibility visibility, int side)
       : frame_(frame),
         stats_(stats),
         visibility_(visibility),
-        lattice_{frame.raster},
+        lattice_{frame.raster, side},
         m_(lattice_.size()),
         n_(frame.raster),
         strip_pixels_(std::min(kStripPixels, n_)),
-        strip_rows_(strip_pixels_ * kSamplesPerSide),
+        strip_rows_(strip_pixels_ * side),
         strips_(n_ / strip_pixels_) {
     bin();
     set_up_polygons(depth_source);
@@ -346,18 +348,17 @@ class ReferenceFrame {
     return frame_.background;
   }
 
-  // Resolve the strip: box filter of the 16 samples of each pixel.
+  // Resolve the strip: box filter of the side x side samples of each pixel.
   void resolve(int strip, RasterImage& out) const {
-    const int row0 = strip * strip_rows_;
+    const int row0 = strip * strip_rows_, side = lattice_.side;
+    std::int32_t ids[kMaxReferenceSamplesPerSide * kMaxReferenceSamplesPerSide];
     for (int py = strip * strip_pixels_; py < (strip + 1) * strip_pixels_; ++py)
       for (int px = 0; px < n_; ++px) {
         double sum[3] = {0, 0, 0};
-        std::int32_t ids[kSamplesPerPixel];
         int nid = 0;
-        for (int sy = 0; sy < kSamplesPerSide; ++sy)
-          for (int sx = 0; sx < kSamplesPerSide; ++sx) {
-            const std::size_t idx = std::size_t(py * kSamplesPerSide + sy - row0) * std::size_t(m_) +
-                                    std::size_t(px * kSamplesPerSide + sx);
+        for (int sy = 0; sy < side; ++sy)
+          for (int sx = 0; sx < side; ++sx) {
+            const std::size_t idx = std::size_t(py * side + sy - row0) * std::size_t(m_) + std::size_t(px * side + sx);
             ids[nid++] = owner_[idx];
             const Rgb c = sample_colour(idx);
             sum[0] += c.r;
@@ -365,8 +366,7 @@ class ReferenceFrame {
             sum[2] += c.b;
           }
         std::uint8_t* dst = out.image.at(px, py);
-        for (int k = 0; k < 3; ++k)
-          dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / kSamplesPerPixel, 0.0, 1.0) * 255.0));
+        for (int k = 0; k < 3; ++k) dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / nid, 0.0, 1.0) * 255.0));
         out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)] = majority_owner(ids, nid);
       }
   }
@@ -388,8 +388,8 @@ class ReferenceFrame {
 };
 
 RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
-                   Visibility visibility) {
-  return ReferenceFrame(frame, depth_source, stats, visibility).render();
+                   Visibility visibility, int side) {
+  return ReferenceFrame(frame, depth_source, stats, visibility, side).render();
 }
 
 }  // namespace

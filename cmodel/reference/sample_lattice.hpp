@@ -20,19 +20,25 @@ namespace cig {
 constexpr int kSamplesPerSide = hls::kSamplesPerSide;
 constexpr int kSamplesPerPixel = hls::kSamplesPerPixel;
 
+// The float reference also takes other lattices (samples per side 1, 2, 4, 8, 16: 1 to 256 samples
+// per pixel, the same stratified rule, sample s at u*p - 1 + (2s + 1)*u/(2 side)): a finer one is
+// the ground truth of `cig sweep`, a coarser one shows what fewer samples cost.
+constexpr int kMaxReferenceSamplesPerSide = 16;
+
 struct SampleLattice {
-  int raster = 512;                                      // N
-  int size() const { return raster * kSamplesPerSide; }  // samples per row and per column
+  int raster = 512;                           // N
+  int side = kSamplesPerSide;                 // samples per pixel side
+  int size() const { return raster * side; }  // samples per row and per column
   double units_per_pixel() const { return double(hls::kGridUnits) / raster; }
   // Grid units -> sample coordinates.
   double from_grid(double g) const {
     const double u = units_per_pixel();
-    return (g + 1.0 - u / 8.0) * (kSamplesPerSide / u);
+    return (g + 1.0 - u / (2.0 * side)) * (side / u);
   }
   // Screen coordinate (Xs or Ys) -> sample coordinate.
   double from_screen(double s) const { return from_grid(grid_x(s)); }
   // Grid units (a length) -> sample units.
-  double length_from_grid(double d) const { return d * (kSamplesPerSide / units_per_pixel()); }
+  double length_from_grid(double d) const { return d * (side / units_per_pixel()); }
 };
 
 }  // namespace cig

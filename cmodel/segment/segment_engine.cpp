@@ -352,6 +352,7 @@ class SegmentPipeline {
     rep["light_points"] = frame.light_points.size();
     // Seed timings: edge formation <= 10 us per edge, 400 ns per segment written, 200 ns read.
     const double est_ms = (st.edges_stored * kEdgeFormationUs + stored * kSegmentWriteNs * 1e-3) * 1e-3;
+    rep["hardware_ms"] = est_ms;  // the modelled hardware time of the frame (cig sweep)
     rep["seed_timing"] = {{"segment_processor_ms", est_ms},
                           {"video_read_ms", st.read * kSegmentReadNs * 1e-6},
                           {"fits_40ms_frame", est_ms <= 40.0}};

@@ -2,7 +2,9 @@
 # twin's x-rows, two frames x two channels). Checks: exit status 0; one table row and one report
 # row per value, in order, with a positive time; and every error figure of a row equal to what
 # `cig compare` reports for the same engine option on the same images (the two share the
-# comparison code, and the sweep must not change what it measures).
+# comparison code, and the sweep must not change what it measures). Then two knobs at once (every
+# combination, the first key slowest, hardware time from the quadtree's cycles, at least one Pareto
+# row), --reference-spp and --plot (a PNG).
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
@@ -39,10 +41,10 @@ function(check_case name input engine key values images)
   set(index 0)
   foreach(value IN LISTS values)
     json(got_value "${sweep}" rows ${index} value)
-    if(NOT got_value STREQUAL value)
-      message(FATAL_ERROR "${name}: row ${index} is '${got_value}', expected '${value}'")
+    if(NOT got_value STREQUAL "${key}=${value}")
+      message(FATAL_ERROR "${name}: row ${index} is '${got_value}', expected '${key}=${value}'")
     endif()
-    if(NOT table MATCHES "\n${value} +[0-9]+\\.[0-9][0-9] +[0-9]+\\.[0-9][0-9] +[0-9]+ +[0-9]+ +[0-9]+\n")
+    if(NOT table MATCHES "\n${key}=${value} +[0-9]+\\.[0-9][0-9] +([0-9]+\\.[0-9][0-9]|-) +[0-9]+\\.[0-9][0-9] +[0-9]+ +[0-9]+ +[0-9]+( \\*)?\n")
       message(FATAL_ERROR "${name}: no table row for ${value}:\n${table}")
     endif()
     json(ms "${sweep}" rows ${index} ms_per_frame)
@@ -68,3 +70,40 @@ endfunction()
 
 check_case(polys ${SOURCE}/scenes/small/overlap.polys.json segment format "coarse;fine" 1)
 check_case(scene ${SOURCE}/scenes/small/hut.json segment-double x-rows "4;2" 4 --frames 0:1)
+
+# Two knobs: the quadtree's architecture (hardware time) x its format (error), 2 x 2 rows.
+run_cig(table sweep ${SOURCE}/scenes/small/overlap.polys.json --engine quadtree --vary arch=6p,4p2t
+        --vary format=coarse,fine --repeat 1 --reference-spp 64 --report ${WORK}/two_knobs.json
+        --plot ${WORK}/two_knobs.png)
+file(READ ${WORK}/two_knobs.json sweep)
+string(JSON rows LENGTH "${sweep}" rows)
+if(NOT rows EQUAL 4)
+  message(FATAL_ERROR "two knobs: ${rows} rows, expected 4")
+endif()
+json(frontier "${sweep}" frontier_time)
+json(spp "${sweep}" reference_spp)
+if(NOT frontier STREQUAL "hardware" OR NOT spp EQUAL 64)
+  message(FATAL_ERROR "two knobs: frontier time '${frontier}', reference spp ${spp}")
+endif()
+set(index 0)
+set(pareto_rows 0)
+foreach(expected "arch=6p format=coarse" "arch=6p format=fine" "arch=4p2t format=coarse" "arch=4p2t format=fine")
+  json(value "${sweep}" rows ${index} value)
+  json(hw "${sweep}" rows ${index} hardware_ms_per_frame)
+  json(pareto "${sweep}" rows ${index} pareto)
+  if(NOT value STREQUAL expected OR NOT hw GREATER 0)
+    message(FATAL_ERROR "two knobs: row ${index} '${value}' (hardware ${hw} ms), expected '${expected}'")
+  endif()
+  if(pareto)
+    math(EXPR pareto_rows "${pareto_rows} + 1")
+  endif()
+  math(EXPR index "${index} + 1")
+endforeach()
+if(pareto_rows EQUAL 0)
+  message(FATAL_ERROR "two knobs: no Pareto row")
+endif()
+file(READ ${WORK}/two_knobs.png magic LIMIT 4 HEX)
+if(NOT magic STREQUAL "89504e47")
+  message(FATAL_ERROR "two knobs: --plot wrote no PNG (${magic})")
+endif()
+message(STATUS "ok: two knobs\n${table}")

@@ -11,6 +11,7 @@
 //   colour x I, fog mix: half a sample LSB                                  -> 2^-9
 // = 0.56 + 2.49 + 0.002 = 3.05 LSB, and the 8-bit pixels (means of 16 samples, each rounded half
 // up) differ by less than 3.05 + 1, so by at most 4.
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -154,6 +155,25 @@ TEST(AttributeAccuracy, NonPlanarIntensitiesSplitIntoFansAgree) {
   EXPECT_EQ(r.report.at("fan_split").at("triangles_added").get<long>(), 1);
   for (std::int32_t id : r.out.ids.id) EXPECT_LE(id, 0);  // ids name the input polygon
   EXPECT_GT(max_abs_against_reference(f, "quadtree", {}, false), 30);
+}
+
+// The reference's lattice at 1 to 256 samples per pixel: a white rectangle whose right edge lies
+// 0.3 of the way into pixel 10 (raster 64: 64 grid units per pixel, pixel 10 spans [639, 703))
+// covers the samples whose centre 639 + (k + 1/2) 64 / side lies left of the edge, and the pixel
+// is 255 times that share (an exact count, independent of the reference's code).
+TEST(ReferenceLattice, SamplesPerPixelCoverTheirShareOfAPixel) {
+  ScreenFrame f;
+  f.raster = 64;
+  const double edge = 639 + 0.3 * 64;
+  f.polygons.push_back(quad(-1, -1, (edge - 2047) / 2048, 1, 5, 5, {1, 1, 1}, {1, 1, 1, 1}));
+  for (int side = 1; side <= 16; side *= 2) {
+    int covered = 0;
+    for (int k = 0; k < side; ++k) covered += 639 + (k + 0.5) * 64 / side < edge ? 1 : 0;
+    const EngineRun r = run(f, "float", {{"spp", std::to_string(side * side)}});
+    EXPECT_EQ(int(r.out.image.at(10, 20)[0]), int(std::lround(255.0 * covered / side))) << side;
+    EXPECT_EQ(int(r.out.image.at(9, 20)[0]), 255);
+    EXPECT_EQ(r.report.at("samples_per_pixel").get<int>(), side * side);
+  }
 }
 
 TEST(FanSplit, SplitsOnlyNonPlanarPolygonsAndKeepsLightPriorities) {
