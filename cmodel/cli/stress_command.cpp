@@ -29,6 +29,7 @@ int StressCommand::run() {
   check_output_file(out_file, "--out");
   write_text_file(out_file, polygon_list_json(f));
   std::cout << "cig: wrote " << f.polygons.size() << " polygon(s) of class " << class_name << " (seed " << seed
+            << (stress_class_on_grid(class_name) ? ", vertices on the formatter grid" : ", vertices off the grid")
             << ") to " << out_file << "\n";
   return 0;
 }

@@ -3,9 +3,12 @@
 //    pixel shows another polygon, and no pixel is off by more than the accuracy bound of
 //    hls/segment/README.md ("Accuracy of I, Z/fog and colour": 4 LSB with the vertices on the
 //    grid; the snap-nonconvex class has constant attributes, so the bound holds there too);
-//  * each fixed-point engine against its double twin within the same bound and with the same ids:
-//    the quadtree twin covers the snapped polygon as the kernel does; the segment twin covers the
-//    unsnapped one, which equals it on the grid classes only;
+//  * the quadtree against its double twin within the same bound and with the same ids (the twin
+//    covers with the kernel's exact integer edge functions). The segment twin is not compared here:
+//    it steps X along an edge in double, so a sample exactly on an edge (the slivers have many)
+//    may fall to either side, and which side depends on the compiler's rounding (clang's fused
+//    multiply-add gave one other id on slivers seed 2 where gcc gave none); the fixed kernel's
+//    exactness is what SpanPieces.* and SegmentStress.* prove;
 //  * decals: also against the z-buffered float-snap reference (coplanar decals tie by priority).
 #include <algorithm>
 #include <map>
@@ -50,7 +53,7 @@ TEST_P(StressClasses, EveryEngineWithinTheBound) {
     ASSERT_GE(f.polygons.size(), 12u) << name;
     const EngineRun reference = run(f, "float", true, {{"visibility", "priority"}});
     std::map<std::string, EngineRun> runs;
-    for (const char* e : {"segment", "segment-double", "quadtree", "quadtree-double"}) runs[e] = run(f, e);
+    for (const char* e : {"segment", "quadtree", "quadtree-double"}) runs[e] = run(f, e);
     for (const char* e : {"segment", "quadtree", "quadtree-double"}) {
       const Difference d = difference(runs[e], reference);
       EXPECT_EQ(d.ids, 0) << name << " seed " << seed << " " << e;
@@ -59,12 +62,6 @@ TEST_P(StressClasses, EveryEngineWithinTheBound) {
     const Difference qt = difference(runs["quadtree"], runs["quadtree-double"]);
     EXPECT_EQ(qt.ids, 0) << name << " seed " << seed;
     EXPECT_LE(qt.max_abs, kBoundLsb) << name << " seed " << seed;
-    if (cli::stress_class_on_grid(name)) {
-      const Difference st = difference(runs["segment"], runs["segment-double"]);
-      EXPECT_EQ(st.ids, 0) << name << " seed " << seed;
-      EXPECT_LE(st.max_abs, kBoundLsb) << name << " seed " << seed;
-      EXPECT_EQ(difference(runs["segment-double"], reference).ids, 0) << name << " seed " << seed;
-    }
     if (name == "decals") {
       const Difference z = difference(runs["segment"], run(f, "float", true));
       EXPECT_EQ(z.ids, 0) << "seed " << seed;
