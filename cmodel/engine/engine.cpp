@@ -1,38 +1,21 @@
 #include "engine/engine.hpp"
 
-#include <algorithm>
-
 #include "engine/fan_split.hpp"
 
 namespace cig {
 
-namespace {
-
-bool needs_split(bool on, const ScreenFrame& frame) {
-  return on && !std::all_of(frame.polygons.begin(), frame.polygons.end(), attributes_planar);
-}
-
-}  // namespace
-
 EngineRun RasterEngine::render(const ScreenFrame& frame) {
-  EngineRun run;
-  long split = 0, added = 0;
-  if (needs_split(fan_split_, frame)) {
-    const FanSplit s = split_nonplanar_polygons(frame);
-    run = render_frame(s.frame);
-    map_ids_to_source(run.out.ids, s.source);
-    split = s.polygons_split;
-    added = s.triangles_added;
-  } else {
-    run = render_frame(frame);
-  }
-  run.report["fan_split"] = {{"on", fan_split_}, {"polygons_split", split}, {"triangles_added", added}};
+  const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
+  EngineRun run = render_frame(s.polygons_split > 0 ? s.frame : frame);
+  if (s.polygons_split > 0) map_ids_to_source(run.out.ids, s.source);
+  run.report["fan_split"] = {
+      {"on", fan_split_}, {"polygons_split", s.polygons_split}, {"triangles_added", s.triangles_added}};
   return run;
 }
 
 void RasterEngine::check_frame(const ScreenFrame& frame) const {
-  if (needs_split(fan_split_, frame)) check_split_frame(split_nonplanar_polygons(frame).frame);
-  else check_split_frame(frame);
+  const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
+  check_split_frame(s.polygons_split > 0 ? s.frame : frame);
 }
 
 }  // namespace cig

@@ -52,6 +52,9 @@ bool attributes_planar(const ScreenPolygon& p) {
 
 FanSplit split_nonplanar_polygons(const ScreenFrame& frame) {
   FanSplit s;
+  std::vector<char> planar(frame.polygons.size());
+  for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) planar[pi] = attributes_planar(frame.polygons[pi]);
+  if (std::all_of(planar.begin(), planar.end(), [](char c) { return c != 0; })) return s;
   s.frame.raster = frame.raster;
   s.frame.frame = frame.frame;
   s.frame.channel = frame.channel;
@@ -62,7 +65,7 @@ FanSplit split_nonplanar_polygons(const ScreenFrame& frame) {
   for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
     const ScreenPolygon& p = frame.polygons[pi];
     first[pi] = std::int32_t(s.frame.polygons.size());
-    if (attributes_planar(p)) {
+    if (planar[pi]) {
       s.frame.polygons.push_back(p);
       s.source.push_back(std::int32_t(pi));
       continue;

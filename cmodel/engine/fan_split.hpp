@@ -26,14 +26,15 @@ constexpr double kPlanarInverseDepthTolerance = 1.0 / 4096;
 bool attributes_planar(const ScreenPolygon& p);
 
 struct FanSplit {
-  ScreenFrame frame;                 // the frame the engines rasterise
+  ScreenFrame frame;                 // the frame the engines rasterise (empty when nothing is split)
   std::vector<std::int32_t> source;  // source[k]: the input polygon of split polygon k
   long polygons_split = 0;           // input polygons split into fans
   long triangles_added = 0;          // polygons the split added (each split n-gon adds n - 3)
 };
 
 // The frame with every non-planar polygon replaced by its fan; light points rank before the first
-// piece of the polygon they ranked before.
+// piece of the polygon they ranked before. When every polygon is planar nothing is copied
+// (polygons_split = 0, frame empty): the engines take the input as it is.
 FanSplit split_nonplanar_polygons(const ScreenFrame& frame);
 
 // Per-pixel ids of the split frame -> ids of the input frame.

@@ -114,14 +114,13 @@ struct Front<DoubleSegmentArith> {
     return count;
   }
   static double level(double unit) { return std::clamp(unit, 0.0, 1.0) * 255; }
-  static void fog_table(P::FogTable& t, const Fog& fog) {
+  // Both twin tables (by Z, by 1/Z) are the fog range itself.
+  template <class Table>
+  static void fog_table(Table& t, const Fog& fog) {
     t.start = fog.start;
     t.end = fog.end;
   }
-  static void fog_inverse_table(P::Plane::FogTable& t, const Fog& fog) {
-    t.start = fog.start;
-    t.end = fog.end;
-  }
+  static void fog_inverse_table(P::Plane::FogTable& t, const Fog& fog) { fog_table(t, fog); }
   // The twin keeps the formatter's unsnapped positions: a convex polygon stays convex.
   static bool split(const hls::FormattedPrimitiveT<P>&, int, hls::SpanPieces&) { return false; }
 };

@@ -65,7 +65,9 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
   // Where il and zl (ir and zr) hold: the left (right) X at the centre of the covered rows.
   const typename P::X xlt = P::midpoint(s.xl[rf], s.xl[rl]);
   const typename P::X xrt = P::midpoint(s.xr[rf], s.xr[rl]);
-  const typename P::Reciprocal inv = P::reciprocal(typename P::X(xrt - xlt));  // once per segment
+  const bool planes = t.plane_mode && !s.is_light;  // I and 1/Z from the polygon's planes
+  // The seed's interpolation along the segment: one reciprocal per segment (planes need none).
+  const typename P::Reciprocal inv = planes ? typename P::Reciprocal() : P::reciprocal(typename P::X(xrt - xlt));
   for (int r = 0; r < kRowsPerLine; ++r) {
     if (r < rf || r > rl) continue;
     int i0 = P::first_column_at_or_after(g, s.xl[r]);
@@ -80,7 +82,7 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
       if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
       if (w.owned[r][i]) continue;
       w.owned[r][i] = true;
-      if (t.plane_mode && !s.is_light) {
+      if (planes) {
         plane_sample(t, src, i, row, w.rgb[r][i]);
         continue;
       }
