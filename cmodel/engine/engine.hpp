@@ -26,6 +26,10 @@ struct EngineRun {
   nlohmann::ordered_json report;  // what the engine did and took, per stage
 };
 
+// The option spp=1|4|16|64... (samples per pixel, S x S with S = 2^t): t, for t = 0..max_side_log2
+// (InputError naming the engine and the values it takes).
+int samples_per_pixel_side_log2(const std::string& spp, int max_side_log2, const char* engine);
+
 class RasterEngine {
  public:
   virtual ~RasterEngine() = default;

@@ -29,7 +29,7 @@ double unit(std::mt19937& rng) { return double(rng() >> 8) * (1.0 / 16777216.0);
 
 class DropSink final : public PixelSink<AnalysisArith> {
  public:
-  unsigned pixel(int, const QuadItem<AnalysisArith>&, bool& became_full) override {
+  std::uint64_t pixel(int, const QuadItem<AnalysisArith>&, bool& became_full) override {
     became_full = false;
     return 0;
   }

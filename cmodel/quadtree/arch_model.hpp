@@ -66,16 +66,17 @@ struct ArchConfig {
   int fifo_depth = 2;
   bool masks = true;
   std::uint32_t stall_seed = 1;
-  int input_gap_percent = 0;     // verification: cycles the input port is empty
-  int output_stall_percent = 0;  // verification: cycles a pixel processor is not ready
+  int input_gap_percent = 0;              // verification: cycles the input port is empty
+  int output_stall_percent = 0;           // verification: cycles a pixel processor is not ready
+  int side_log2 = hls::kDefaultSideLog2;  // S = 2^t samples a side per pixel (the RTL: 4 x 4)
 };
 
 // What flows through the FIFOs: a window (or a pixel record: a level-n window and its samples).
 template <class P>
 struct QuadItem {
   hls::QuadWindow<P> w;
-  hls::UInt<16> samples;    // pixel records: the covered samples
-  std::uint32_t piece = 0;  // index of the polygon piece in the input stream
+  hls::PixelSampleMask samples;  // pixel records: the covered samples (bit S dj + di)
+  std::uint32_t piece = 0;       // index of the polygon piece in the input stream
 };
 
 struct LevelStats {
@@ -111,7 +112,7 @@ class PixelSink {
   virtual ~PixelSink() = default;
   // Processes one pixel record; returns the samples it took, and sets `became_full` when the
   // pixel's samples just became all owned.
-  virtual unsigned pixel(int unit, const QuadItem<P>& item, bool& became_full) = 0;
+  virtual std::uint64_t pixel(int unit, const QuadItem<P>& item, bool& became_full) = 0;
 };
 
 // Optional observer of every record (co-simulation, tests).
@@ -121,7 +122,7 @@ class ArchTracer {
   virtual ~ArchTracer() = default;
   virtual void load(long long /*cycle*/, int /*pe*/, const QuadItem<P>& /*window*/, unsigned /*mask*/) {}
   virtual void emit(long long /*cycle*/, int /*pe*/, int /*child*/, const QuadItem<P>& /*child*/, bool /*full*/) {}
-  virtual void pixel(long long /*cycle*/, int /*unit*/, const QuadItem<P>& /*record*/, unsigned /*fresh*/,
+  virtual void pixel(long long /*cycle*/, int /*unit*/, const QuadItem<P>& /*record*/, std::uint64_t /*fresh*/,
                      bool /*became_full*/) {}
   virtual void mask_set(long long /*cycle*/, int /*level*/, int /*x*/, int /*y*/, int /*child*/) {}
 };
@@ -152,7 +153,7 @@ class ArchModel {
           if (f.start_count() < cfg_.fifo_depth) {
             const int slot = allocate();
             pool_[std::size_t(slot)].w = roots[next_root];
-            pool_[std::size_t(slot)].samples = hls::UInt<16>(0);
+            pool_[std::size_t(slot)].samples = hls::PixelSampleMask(0);
             pool_[std::size_t(slot)].piece = std::uint32_t(next_root);
             st.pieces[next_root].accepted_cycle = t;
             push(pes_[0].in_fifo, slot);
@@ -332,7 +333,7 @@ class ArchModel {
       const bool to_lifo = level < pe.last_level;
       const int dest = pe.out_base + (pe.out_by_quadrant ? q : 0);
       const bool room = to_lifo || fifos_[std::size_t(dest)].start_count() < cfg_.fifo_depth;
-      hls::evaluate_child(held.w, q, n_, false, child_);
+      hls::evaluate_child(held.w, q, n_, false, child_, cfg_.side_log2);
       if (child_.covered) {
         if (!room) {
           ++st.pe_stall_cycles[std::size_t(index)];
@@ -408,7 +409,7 @@ class ArchModel {
     --in_flight_;
     const QuadItem<P>& it = pool_[std::size_t(slot)];
     bool full = false;
-    const unsigned fresh = sink.pixel(unit, it, full);
+    const std::uint64_t fresh = sink.pixel(unit, it, full);
     ++st.pixel_records;
     PieceStats& ps = st.pieces[it.piece];
     ++ps.pixel_records;

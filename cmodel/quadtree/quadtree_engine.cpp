@@ -9,6 +9,7 @@
 
 #include "common/error.hpp"
 #include "common/timing.hpp"
+#include "formatter/lattice_check.hpp"
 #include "quadtree/quadtree_frame.hpp"
 
 namespace cig {
@@ -21,6 +22,7 @@ struct QuadOptions {
   std::string format = "fine";
   int fifo = 2;
   double clock_mhz = 100;
+  int side_log2 = hls::kDefaultSideLog2;  // spp = 4^t samples per pixel
 };
 
 constexpr double kFrameBudgetMs = 20.0;  // seed 004: t_0 = 20 ms (50 Hz)
@@ -37,6 +39,7 @@ class QuadPipeline {
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2 || (1 << log2) != n_pix)
       throw InputError("", "raster",
                        "the quadtree engine renders rasters of 16 to 1024 lines, not " + std::to_string(n_pix));
+    check_lattice(log2, options_.side_log2, "quadtree");
     return quad::Architecture::parse(options_.arch, log2);
   }
 
@@ -57,6 +60,7 @@ class QuadPipeline {
     quad::ArchConfig cfg;
     cfg.fifo_depth = options_.fifo;
     cfg.masks = options_.masks;
+    cfg.side_log2 = options_.side_log2;
     EngineRun run;
     auto& rep = run.report;
     rep["engine"] = name_;
@@ -64,16 +68,17 @@ class QuadPipeline {
     rep["architecture"] = arch.text;
     rep["masks"] = options_.masks;
     rep["fifo_depth"] = options_.fifo;
+    rep["samples_per_pixel"] = 1 << (2 * options_.side_log2);
 
     // Formatter and setup, in priority order (front to back).
     auto t0 = Clock::now();
     quad::FrontEndStats fe;
-    const std::vector<hls::QuadWindow<P>> roots = quad::front_end<P>(frame, log2, fe);
+    const std::vector<hls::QuadWindow<P>> roots = quad::front_end<P>(frame, log2, fe, options_.side_log2);
     const double setup_ms = ms_since(t0);
 
     // Tables and the light point unit (lights rasterised before the polygons).
     t0 = Clock::now();
-    pixels_.begin(frame, log2);
+    pixels_.begin(frame, log2, options_.side_log2);
     const double lights_ms = ms_since(t0);
 
     // The architecture, clock by clock.
@@ -212,6 +217,8 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
       if (value != "coarse" && value != "medium" && value != "fine")
         throw InputError("", "--engine-opt", "format '" + value + "' is not one of coarse, medium, fine");
       o.format = value;
+    } else if (key == "spp") {
+      o.side_log2 = samples_per_pixel_side_log2(value, hls::kMaxSideLog2, engine);
     } else if (key == "fifo") {
       char* end = nullptr;
       const long v = std::strtol(value.c_str(), &end, 10);
@@ -228,7 +235,7 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
       throw InputError(
           "", "--engine-opt",
           std::string("engine '") + engine + "' takes no option '" + key +
-              (twin ? "' (known: arch, masks, fifo, clock)" : "' (known: arch, masks, format, fifo, clock)"));
+              (twin ? "' (known: arch, masks, fifo, clock, spp)" : "' (known: arch, masks, format, fifo, clock, spp)"));
     }
   }
   if (twin) return std::make_unique<QuadEngine<QuadDoubleArith>>(o, engine, "double");

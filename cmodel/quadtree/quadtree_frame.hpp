@@ -100,17 +100,17 @@ struct FrontEndStats {
 // A polygon that snapping made non-convex: its span pieces' level-0 windows. False when the
 // polygon is convex (the convex setup covers it).
 template <class P>
-bool span_piece_roots(const hls::QuadPrimitiveInput<P>& in, int raster_log2, hls::SpanPieces& pieces,
+bool span_piece_roots(const hls::QuadPrimitiveInput<P>& in, int raster_log2, int side_log2, hls::SpanPieces& pieces,
                       std::vector<hls::QuadWindow<P>>& roots, FrontEndStats& st) {
   hls::FormattedPrimitive positions;
   hls::span_input_from_setup(in, positions);
-  hls::split_into_span_pieces(positions, raster_log2, pieces);
+  hls::split_into_span_pieces(positions, raster_log2, pieces, side_log2);
   if (pieces.convex) return false;
   ++st.non_convex;
   hls::QuadWindow<P> root;
   for (int k = 0; k < int(pieces.count.value()); ++k) {
     bool ok = false;
-    hls::quadtree_setup_span_piece(in, pieces.piece[k], raster_log2, root, ok);
+    hls::quadtree_setup_span_piece(in, pieces.piece[k], raster_log2, root, ok, side_log2);
     if (!ok) break;  // all vertices on one line: covers nothing
     roots.push_back(root);
     ++st.span_pieces;
@@ -118,9 +118,11 @@ bool span_piece_roots(const hls::QuadPrimitiveInput<P>& in, int raster_log2, hls
   return true;
 }
 
-// The pieces' level-0 windows of a frame, in priority order (front to back).
+// The pieces' level-0 windows of a frame, in priority order (front to back), on the lattice of
+// S = 2^side_log2 samples a side per pixel.
 template <class P>
-std::vector<hls::QuadWindow<P>> front_end(const ScreenFrame& frame, int raster_log2, FrontEndStats& st) {
+std::vector<hls::QuadWindow<P>> front_end(const ScreenFrame& frame, int raster_log2, FrontEndStats& st,
+                                          int side_log2 = hls::kDefaultSideLog2) {
   std::vector<hls::QuadWindow<P>> roots;
   roots.reserve(frame.polygons.size());
   hls::QuadSetup<P> setup;
@@ -128,8 +130,8 @@ std::vector<hls::QuadWindow<P>> front_end(const ScreenFrame& frame, int raster_l
   const auto pieces = std::make_unique<hls::SpanPieces>();
   for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
     QuadFront<P>::setup_input(frame.polygons[pi], std::uint16_t(pi), in);
-    if (span_piece_roots(in, raster_log2, *pieces, roots, st)) continue;
-    hls::quadtree_setup(in, raster_log2, setup);
+    if (span_piece_roots(in, raster_log2, side_log2, *pieces, roots, st)) continue;
+    hls::quadtree_setup(in, raster_log2, setup, side_log2);
     const int pieces = int(setup.pieces.value());
     if (pieces == 0) ++st.degenerate;
     if (pieces > 1) ++st.split;
@@ -147,9 +149,11 @@ class PixelFrame final : public PixelSink<P> {
   PixelFrame() : tables_(std::make_unique<hls::QuadPixelTables<P>>()) {}
 
   // Loads the tables and the light covers of a frame and clears the pixel states.
-  void begin(const ScreenFrame& frame, int raster_log2) {
+  void begin(const ScreenFrame& frame, int raster_log2, int side_log2 = hls::kDefaultSideLog2) {
     n_ = 1 << raster_log2;
     log2_ = raster_log2;
+    side_log2_ = side_log2;
+    spp_ = 1 << (2 * side_log2);
     QuadFront<P>::fill_fog(*tables_, frame.fog);
     for (int c = 0; c < 3; ++c) {
       tables_->fog_colour[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.fog.colour[c], 0.0, 1.0) * 255)));
@@ -157,21 +161,23 @@ class PixelFrame final : public PixelSink<P> {
     }
     const std::size_t pixels = std::size_t(n_) * std::size_t(n_);
     states_.assign(pixels, hls::QuadPixelState<P>());
-    owners_.assign(pixels * 16, -1);
+    owners_.assign(pixels * std::size_t(spp_), -1);
     cover_index_.assign(pixels, -1);
     covers_.clear();
     light_samples_ = rasterise_lights(frame);
     samples_written_ = 0;
   }
 
-  unsigned pixel(int, const QuadItem<P>& it, bool& became_full) override {
+  std::uint64_t pixel(int, const QuadItem<P>& it, bool& became_full) override {
     const int x = int(it.w.x.value()), y = int(it.w.y.value());
     const std::size_t pix = std::size_t(y) * std::size_t(n_) + std::size_t(x);
-    const unsigned f = unsigned(hls::quad_pixel_process(it.w, it.samples, *tables_, cover(pix), states_[pix]).value());
-    became_full = f != 0 && states_[pix].owned.value() == 0xFFFFu;
-    samples_written_ += __builtin_popcount(f);
-    for (int s = 0; s < 16; ++s)
-      if ((f >> s) & 1u) owners_[pix * 16 + std::size_t(s)] = std::int32_t(it.w.poly.id.value());
+    const std::uint64_t f =
+        hls::quad_pixel_process(it.w, it.samples, *tables_, cover(pix), states_[pix], side_log2_).value();
+    const std::uint64_t all = spp_ == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << spp_) - 1;
+    became_full = f != 0 && states_[pix].owned.value() == all;
+    samples_written_ += __builtin_popcountll(f);
+    for (int s = 0; s < spp_; ++s)
+      if ((f >> s) & 1u) owners_[pix * std::size_t(spp_) + std::size_t(s)] = std::int32_t(it.w.poly.id.value());
     return f;
   }
 
@@ -179,17 +185,18 @@ class PixelFrame final : public PixelSink<P> {
   void resolve(Image& image, IdBuffer& ids) const {
     image = Image(n_, n_);
     ids = IdBuffer(n_, n_);
-    std::vector<std::int32_t> own(16);
+    std::vector<std::int32_t> own(static_cast<std::size_t>(spp_));
     for (int py = 0; py < n_; ++py)
       for (int px = 0; px < n_; ++px) {
         const std::size_t pix = std::size_t(py) * std::size_t(n_) + std::size_t(px);
         hls::UInt<8> rgb[3];
-        hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb);
+        hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb, side_log2_);
         std::uint8_t* dst = image.at(px, py);
         for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(rgb[c].value());
-        std::copy(owners_.begin() + std::ptrdiff_t(pix * 16), owners_.begin() + std::ptrdiff_t(pix * 16 + 16),
+        const std::size_t first = pix * std::size_t(spp_);
+        std::copy(owners_.begin() + std::ptrdiff_t(first), owners_.begin() + std::ptrdiff_t(first + std::size_t(spp_)),
                   own.begin());
-        ids.id[pix] = majority_owner(own.data(), 16);
+        ids.id[pix] = majority_owner(own.data(), spp_);
       }
   }
 
@@ -211,7 +218,8 @@ class PixelFrame final : public PixelSink<P> {
   // the float reference's disc, verif/kernels/test_segment_arith.cpp) into per-pixel covers; a
   // sample keeps the light with the earliest priority position (ties: the earlier light).
   long rasterise_lights(const ScreenFrame& frame) {
-    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2_);
+    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2_, side_log2_);
+    const int side = g.side();
     std::vector<std::size_t> order(frame.light_points.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -225,23 +233,23 @@ class PixelFrame final : public PixelSink<P> {
       hls::formatter_top(raw_from_light(l, std::uint16_t(li)), f);
       typename P::Sample colour[3];
       QuadFront<P>::light_colour(l, f, *tables_, colour);
-      const int k = hls::light_chords(f, log2_, chords);
+      const int k = hls::light_chords(f, log2_, chords, side_log2_);
       for (int s = 0; s < k; ++s) {
         const int row = chords[s].row;
         int i0 = 0, i1 = 0;
         hls::light_chord_columns(chords[s], g, i0, i1);
         i0 = std::max(0, i0);
-        i1 = std::min(4 * n_ - 1, i1);
+        i1 = std::min(g.rows() - 1, i1);
         for (int i = i0; i <= i1; ++i) {
-          const std::size_t pix = std::size_t(row / 4) * std::size_t(n_) + std::size_t(i / 4);
+          const std::size_t pix = std::size_t(row / side) * std::size_t(n_) + std::size_t(i / side);
           if (cover_index_[pix] < 0) {
             cover_index_[pix] = int(covers_.size());
             covers_.push_back(hls::QuadLightCover<P>{});
           }
           hls::QuadLightCover<P>& cv = covers_[std::size_t(cover_index_[pix])];
-          const int bit = 4 * (row & 3) + (i & 3);
+          const int bit = side * (row & (side - 1)) + (i & (side - 1));
           if (cv.mask.bit(bit)) continue;  // an earlier light holds the sample
-          cv.mask = hls::UInt<16>(cv.mask.value() | (1u << bit));
+          cv.mask = hls::PixelSampleMask(cv.mask.value() | (std::uint64_t{1} << bit));
           cv.priority[bit] = hls::UInt<17>(std::uint64_t(std::max(0, l.priority)));
           for (int c = 0; c < 3; ++c) cv.colour[bit][c] = colour[c];
           ++samples;
@@ -251,7 +259,7 @@ class PixelFrame final : public PixelSink<P> {
     return samples;
   }
 
-  int n_ = 0, log2_ = 0;
+  int n_ = 0, log2_ = 0, side_log2_ = hls::kDefaultSideLog2, spp_ = hls::kSamplesPerPixel;
   std::unique_ptr<hls::QuadPixelTables<P>> tables_;
   std::vector<hls::QuadPixelState<P>> states_;
   std::vector<std::int32_t> owners_;

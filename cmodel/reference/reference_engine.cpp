@@ -13,7 +13,7 @@ class FloatEngine : public RasterEngine {
   explicit FloatEngine(const EngineOptions& o) : options_(o) {
     for (const auto& [key, value] : o.params) {
       if (key == "spp") {
-        side_ = samples_per_side(value);
+        side_ = 1 << samples_per_pixel_side_log2(value, kMaxReferenceSideLog2, "float");
         continue;
       }
       if (key != "visibility")
@@ -24,12 +24,6 @@ class FloatEngine : public RasterEngine {
         throw InputError("", "--engine-opt", "visibility='" + value + "' is neither depth nor priority");
       visibility_ = value == "priority" ? Visibility::kPriority : Visibility::kDepth;
     }
-  }
-  // spp = side^2 samples per pixel, side 1..16 (reference/sample_lattice.hpp).
-  static int samples_per_side(const std::string& spp) {
-    for (int side = 1; side <= kMaxReferenceSamplesPerSide; side *= 2)
-      if (spp == std::to_string(side * side)) return side;
-    throw InputError("", "--engine-opt", "spp='" + spp + "' is none of 1, 4, 16, 64, 256 (samples per pixel)");
   }
   const char* name() const override { return "float"; }
 

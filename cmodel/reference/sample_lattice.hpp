@@ -23,7 +23,8 @@ constexpr int kSamplesPerPixel = hls::kSamplesPerPixel;
 // The float reference also takes other lattices (samples per side 1, 2, 4, 8, 16: 1 to 256 samples
 // per pixel, the same stratified rule, sample s at u*p - 1 + (2s + 1)*u/(2 side)): a finer one is
 // the ground truth of `cig sweep`, a coarser one shows what fewer samples cost.
-constexpr int kMaxReferenceSamplesPerSide = 16;
+constexpr int kMaxReferenceSideLog2 = 4;
+constexpr int kMaxReferenceSamplesPerSide = 1 << kMaxReferenceSideLog2;
 
 struct SampleLattice {
   int raster = 512;                           // N

@@ -35,8 +35,9 @@ struct DoubleSegmentArith {
   // so fan_triangle does not arise).
   using Plane = PlaneDoubleArith;
   using Planes = hls::AttributePlanes<Plane>;
-  static void fit_planes(const hls::FormattedPrimitiveT<DoubleSegmentArith>& in, int raster_log2, bool, Planes& out) {
-    const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  static void fit_planes(const hls::FormattedPrimitiveT<DoubleSegmentArith>& in, int raster_log2, bool, Planes& out,
+                         int side_log2 = hls::kDefaultSideLog2) {
+    const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
     const double s = std::ldexp(1.0, g.log2_half_spacing), o = g.offset_half;
     const int n = int(in.n.value());
     double nz = 0, sx = 0, sy = 0, nx[2] = {0, 0}, ny[2] = {0, 0}, sv[2] = {0, 0};
@@ -111,10 +112,10 @@ struct DoubleSegmentArith {
   static double shade(double c, double i) { return c * i / 256.0; }
   static double mix(double s, double fog, double f) { return s * (1 - f) + fog * f; }
   static double level_sample(double c) { return c; }
-  static hls::UInt<8> resolve(const double (&s)[16]) {
+  static hls::UInt<8> resolve(const double (&s)[hls::kMaxSamplesPerPixel], int side_log2) {
     double sum = 0;
-    for (double v : s) sum += v;
-    return hls::UInt<8>(int(std::lround(std::clamp(sum / 16.0, 0.0, 255.0))));
+    for (int k = 0; k < 1 << (2 * side_log2); ++k) sum += s[k];
+    return hls::UInt<8>(int(std::lround(std::clamp(std::ldexp(sum, -2 * side_log2), 0.0, 255.0))));
   }
   static int first_column_at_or_after(const LatticeGeometry& g, double x) {
     return int(std::ceil((2 * x - g.offset_half) / std::ldexp(1.0, g.log2_half_spacing)));

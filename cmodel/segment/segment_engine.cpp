@@ -10,6 +10,7 @@
 #include "common/timing.hpp"
 #include "formatter/fog_table.hpp"
 #include "formatter/formatter_twin.hpp"
+#include "formatter/lattice_check.hpp"
 #include "hls/formatter/formatter.hpp"
 #include "hls/segment/edge_generator.hpp"
 #include "hls/segment/frame_memory.hpp"
@@ -49,9 +50,9 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
     hls::formatter_top(raw_from_light(l, id), out);
     return out;
   }
-  static int light_segments(const hls::FormattedPrimitive& l, int log2,
+  static int light_segments(const hls::FormattedPrimitive& l, int log2, int side_log2,
                             hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
-    return hls::generate_light_segments<P>(l, log2, hls::UInt<3>(0), out);
+    return hls::generate_light_segments<P>(l, log2, hls::UInt<3>(0), out, side_log2);
   }
   static typename P::Level level(double unit) {
     return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255)));
@@ -60,8 +61,8 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
   // Perspective-correct mode: the table indexed by the e8m7 code of 1/Z.
   static void fog_inverse_table(typename P::Plane::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, true); }
   // A polygon that snapping made non-convex: its span pieces (hls/formatter/span_pieces.hpp).
-  static bool split(const hls::FormattedPrimitive& f, int log2, hls::SpanPieces& pieces) {
-    hls::split_into_span_pieces(f, log2, pieces);
+  static bool split(const hls::FormattedPrimitive& f, int log2, int side_log2, hls::SpanPieces& pieces) {
+    hls::split_into_span_pieces(f, log2, pieces, side_log2);
     return !pieces.convex;
   }
 };
@@ -88,10 +89,10 @@ struct Front<DoubleSegmentArith> {
     return convert(formatter_twin(l, id));
   }
   // The twin of the coding table: the exact chord of the disc of diameter D at each row.
-  static int light_segments(const hls::FormattedPrimitiveT<P>& l, int log2,
+  static int light_segments(const hls::FormattedPrimitiveT<P>& l, int log2, int side_log2,
                             hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
-    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2);
-    const int rows = hls::kRowsPerLine << log2;
+    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(log2, side_log2);
+    const int rows = g.rows(), within = g.side() - 1;
     const double cx = l.v[0].x, cy = l.v[0].y, d = l.d;  // half units: radius D/2 grid = D half
     int count = 0;
     for (int row = std::max(0, P::first_row_at_or_after(g, cy - 0.5 * d)); row < rows && count < hls::kMaxLightSegments;
@@ -100,11 +101,11 @@ struct Front<DoubleSegmentArith> {
       if (std::abs(dy) > d) break;
       const double w = std::sqrt(d * d - dy * dy);
       hls::Segment<P>& s = out[count++];
-      s.line = hls::UInt<10>(row >> 2);
+      s.line = hls::UInt<10>(row >> side_log2);
       s.type = hls::UInt<3>(hls::kSegWhole);
-      s.row_first = s.row_last = hls::UInt<2>(row & 3);
-      s.xl[row & 3] = cx - 0.5 * w;
-      s.xr[row & 3] = cx + 0.5 * w + 1e-9;  // the disc's edge is inclusive
+      s.row_first = s.row_last = hls::UInt<3>(row & within);
+      s.xl[row & within] = cx - 0.5 * w;
+      s.xr[row & within] = cx + 0.5 * w + 1e-9;  // the disc's edge is inclusive
       s.il = s.ir = l.v[0].i;
       s.zl = s.zr = l.v[0].z;
       s.source = l.id;
@@ -122,7 +123,7 @@ struct Front<DoubleSegmentArith> {
   }
   static void fog_inverse_table(P::Plane::FogTable& t, const Fog& fog) { fog_table(t, fog); }
   // The twin keeps the formatter's unsnapped positions: a convex polygon stays convex.
-  static bool split(const hls::FormattedPrimitiveT<P>&, int, hls::SpanPieces&) { return false; }
+  static bool split(const hls::FormattedPrimitiveT<P>&, int, int, hls::SpanPieces&) { return false; }
 };
 
 // ---- The pipeline ----------------------------------------------------------------------------------
@@ -140,18 +141,21 @@ class SegmentPipeline {
 
   // seed_quadrilateral: the seed's four-X segment (x-rows=2); seed_interpolation: the seed's I and
   // Z at segment ends (eq. 3-4), interpolated along the row (interp=seed), instead of the planes.
-  SegmentPipeline(bool seed_quadrilateral, bool seed_interpolation) : SegmentPipeline() {
+  // side_log2: S = 2^t sample rows per line and samples per row of a pixel.
+  SegmentPipeline(bool seed_quadrilateral, bool seed_interpolation, int side_log2) : SegmentPipeline() {
     seed_quadrilateral_ = seed_quadrilateral;
     seed_interpolation_ = seed_interpolation;
+    side_log2_ = side_log2;
   }
 
   // The raster's log2 and the frame's counts against the hardware's (InputError).
-  static int check_frame(const ScreenFrame& frame) {
+  static int check_frame(const ScreenFrame& frame, int side_log2) {
     const int n = frame.raster;
     const int log2 = hls::raster_log2_of(n);
     if (log2 < hls::kMinRasterLog2 || log2 > hls::kMaxRasterLog2)
       throw InputError("", "raster",
                        "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
+    check_lattice(log2, side_log2, "segment");
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) ||
         frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons",
@@ -162,7 +166,7 @@ class SegmentPipeline {
   }
 
   EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
-    const int log2 = check_frame(frame);
+    const int log2 = check_frame(frame, side_log2_);
     FrameStats st;
     auto t0 = Clock::now();
     format_and_count(frame, log2, st);
@@ -198,7 +202,7 @@ class SegmentPipeline {
   int light_segments_of(const ScreenFrame& frame, std::size_t li, int log2) {
     const auto fl = F::light(frame.light_points[li], std::uint16_t(li));
     for (int c = 0; c < 3; ++c) tables_->light_colour[li][c] = fl.colour[c];
-    return F::light_segments(fl, log2, light_out_);
+    return F::light_segments(fl, log2, side_log2_, light_out_);
   }
 
   // A polygon (or a span piece of one) into the frame memory, its segments counted.
@@ -219,17 +223,17 @@ class SegmentPipeline {
     for (std::size_t pi = 0; pi < frame.polygons.size(); ++pi) {
       const auto fp = F::polygon(frame.polygons[pi], std::uint16_t(pi));
       for (int c = 0; c < 3; ++c) tables_->polygon_colour[pi][c] = fp.colour[c];
-      if (F::split(fp, log2, *span_pieces_)) {
+      if (F::split(fp, log2, side_log2_, *span_pieces_)) {
         ++st.non_convex;
         st.span_pieces += long(span_pieces_->count.value());
         if (span_pieces_->count.value() == 0) ++st.degenerate;  // no sample row crosses it
         for (int k = 0; k < int(span_pieces_->count.value()); ++k) {
-          hls::generate_span_piece_edges<P>(fp, span_pieces_->piece[k], log2, edges);
+          hls::generate_span_piece_edges<P>(fp, span_pieces_->piece[k], log2, edges, side_log2_);
           store(edges, st);
         }
         continue;
       }
-      hls::generate_edges<P>(fp, log2, edges);
+      hls::generate_edges<P>(fp, log2, edges, side_log2_);
       if (!edges.valid) {
         ++st.degenerate;
         continue;
@@ -278,7 +282,7 @@ class SegmentPipeline {
       }
       hls::Segment<P>(&out)[hls::kMaxLines] = *reinterpret_cast<hls::Segment<P>(*)[hls::kMaxLines]>(segments_.get());
       const int k = hls::generate_segments<P>(edges, log2, hls::UInt<3>(std::uint64_t(frame.channel & 7)),
-                                              seed_quadrilateral_, out);
+                                              seed_quadrilateral_, out, side_log2_);
       for (int s = 0; s < k; ++s) hls::y_sort(out[s], *segment_memory_);
       st.polygon_segments += k;
     }
@@ -299,7 +303,7 @@ class SegmentPipeline {
     out.ids = IdBuffer(n, n);
     hls::PixelLine pixels;
     for (int line = 0; line < n; ++line) {
-      st.read += hls::render_line(line, log2, *segment_memory_, *tables_, *line_, pixels);
+      st.read += hls::render_line(line, log2, *segment_memory_, *tables_, *line_, pixels, side_log2_);
       st.max_per_line = std::max<long>(st.max_per_line, long(segment_memory_->count[line].value()));
       for (int px = 0; px < n; ++px) {
         std::uint8_t* dst = out.image.at(px, line);
@@ -316,6 +320,7 @@ class SegmentPipeline {
     rep["format"] = format_name;
     rep["seed_quadrilateral"] = seed_quadrilateral_;
     rep["interpolation"] = seed_interpolation_ ? "seed" : "plane";
+    rep["samples_per_pixel"] = 1 << (2 * side_log2_);
     const int n = frame.raster;
     const long stored = segment_memory_->used[0] + segment_memory_->used[1];
     const long lost = long(segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value());
@@ -370,27 +375,31 @@ class SegmentPipeline {
   std::unique_ptr<hls::SpanPieces> span_pieces_;  // of the polygon being formatted
   bool seed_quadrilateral_ = false;
   bool seed_interpolation_ = false;
+  int side_log2_ = hls::kDefaultSideLog2;
 };
 
 template <class P>
 class SegmentEngine : public RasterEngine {
  public:
-  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp)
-      : name_(name), format_(format), pipeline_(quad, seed_interp) {}
+  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp, int side_log2)
+      : name_(name), format_(format), side_log2_(side_log2), pipeline_(quad, seed_interp, side_log2) {}
   const char* name() const override { return name_; }
   void check_raster(int raster) const override {
     ScreenFrame f;
     f.raster = raster;
-    SegmentPipeline<P>::check_frame(f);
+    SegmentPipeline<P>::check_frame(f, side_log2_);
   }
 
  protected:
   EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
-  void check_split_frame(const ScreenFrame& frame) const override { SegmentPipeline<P>::check_frame(frame); }
+  void check_split_frame(const ScreenFrame& frame) const override {
+    SegmentPipeline<P>::check_frame(frame, side_log2_);
+  }
 
  private:
   const char* name_;
   const char* format_;
+  int side_log2_;
   SegmentPipeline<P> pipeline_;
 };
 
@@ -402,6 +411,7 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
                      "--snap applies to the float engine; the segment engine's formatter snaps by itself");
   std::string format = "fine";
   bool quad = false, seed_interp = false;
+  int side_log2 = hls::kDefaultSideLog2;
   const char* engine = twin ? "segment-double" : "segment";
   for (const auto& [key, value] : options.params) {
     if (key == "format" && !twin) {
@@ -411,6 +421,8 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
         throw InputError("", "--engine-opt",
                          "x-rows must be 4 (X at every sample row) or 2 (the seed's four-X segment)");
       quad = value == "2";
+    } else if (key == "spp") {
+      side_log2 = samples_per_pixel_side_log2(value, hls::kMaxSideLog2, engine);
     } else if (key == "interp") {
       if (value != "plane" && value != "seed")
         throw InputError("", "--engine-opt",
@@ -420,19 +432,19 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
     } else {
       throw InputError("", "--engine-opt",
                        std::string("engine '") + engine + "' takes no option '" + key +
-                           (twin ? "' (known: x-rows, interp)" : "' (known: format, x-rows, interp)"));
+                           (twin ? "' (known: x-rows, interp, spp)" : "' (known: format, x-rows, interp, spp)"));
     }
   }
-  if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp);
+  if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp, side_log2);
   if (format == "coarse")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(
-        engine, hls::SegmentFormatCoarse::name, quad, seed_interp);
+        engine, hls::SegmentFormatCoarse::name, quad, seed_interp, side_log2);
   if (format == "medium")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(
-        engine, hls::SegmentFormatMedium::name, quad, seed_interp);
+        engine, hls::SegmentFormatMedium::name, quad, seed_interp, side_log2);
   if (format == "fine")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
-        engine, hls::SegmentFormatFine::name, quad, seed_interp);
+        engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2);
   throw InputError("", "--engine-opt", "format '" + format + "' is not one of coarse, medium, fine");
 }
 

@@ -38,7 +38,7 @@ constexpr int kMaxSpanPieces = (kMaxSpanEvents - 1) * kMaxSpansPerRow;  // 1208
 struct SpanPiece {
   UInt<4> left_top, left_bottom;    // left boundary: the edge between these vertices (of the input)
   UInt<4> right_top, right_bottom;  // right boundary
-  Int<13> row_first, row_last;      // global sample rows 0..4N-1, inclusive
+  Int<13> row_first, row_last;      // global sample rows 0..SN-1, inclusive
 };
 
 struct SpanPieces {
@@ -250,16 +250,17 @@ inline int add_span(const SpanEdge& l, const SpanEdge& r, int first, int last, c
 
 // The span pieces of one formatted polygon on the lattice of an N = 2^raster_log2 raster.
 template <class Q>
-void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, SpanPieces& out) {
+void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, SpanPieces& out,
+                            int side_log2 = kDefaultSideLog2) {
   using span_detail::SpanEdge;
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
   int hx[kMaxVertices], hy[kMaxVertices], src[kMaxVertices];
   const int m = span_detail::kept_vertices(in, hx, hy, src);
   out.count = UInt<11>(0);
   out.convex = m < 3 || span_polygon_is_convex(hx, hy, m) || span_polygon_is_flat(hx, hy, m);
   if (out.convex) return;
   SpanEdge edge[kMaxVertices];
-  const int ne = span_detail::crossing_edges(hx, hy, src, m, g, kSamplesPerSide << raster_log2, edge);
+  const int ne = span_detail::crossing_edges(hx, hy, src, m, g, g.rows(), edge);
   int event[kMaxSpanEvents];
   const int events = span_detail::slab_bounds(edge, ne, g, event);
   // Each slab: its crossings paired left to right into spans.

@@ -200,8 +200,9 @@ inline int largest_fan_triangle(const int (&hx)[kMaxVertices], const int (&hy)[k
 template <class P, int N>
 void fit_attribute_planes(const typename P::VertexI (&vi)[kMaxVertices], const typename P::VertexZ (&vz)[kMaxVertices],
                           const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], const int (&idx)[N], int m,
-                          const Int<34>& nz, int raster_log2, int e_min, AttributePlanes<P>& out) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+                          const Int<34>& nz, int raster_log2, int e_min, AttributePlanes<P>& out,
+                          int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
   const int ls = g.log2_half_spacing;  // log2 s
   const int o = g.offset_half;         // half-unit position of sample 0
   typename P::Value val[kPlaneParams][N];

@@ -43,15 +43,16 @@ constexpr LightCodingTable kLightCodingTable{};
 
 // One covered sample row: the samples at half-unit X in [centre_half - w, centre_half + w].
 struct LightChord {
-  int row;          // global sample row 0..4N-1
+  int row;          // global sample row 0..SN-1
   int centre_half;  // 2X of the light's centre
   int w;            // half-chord, half units (>= 0)
 };
 
 // The chords of a formatted light point, top to bottom; returns how many (0..kMaxLightRows).
-inline int light_chords(const FormattedPrimitive& light, int raster_log2, LightChord (&out)[kMaxLightRows]) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int rows = kSamplesPerSide << raster_log2;
+inline int light_chords(const FormattedPrimitive& light, int raster_log2, LightChord (&out)[kMaxLightRows],
+                        int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
+  const int rows = g.rows();
   const int cx2 = 2 * int(light.v[0].x.value()), cy2 = 2 * int(light.v[0].y.value());
   const int d = int(light.d.value());
   int first = g.first_sample_at_or_after_half(cy2 - d);

@@ -51,12 +51,22 @@ inline SampleColour fog_mix(const SampleColour& s, const SampleLevel& fog, const
 
 inline SampleColour level_sample(const SampleLevel& c) { return SampleColour(UFixed<8, 8>::from_raw(c)); }
 
-// Box filter: the mean of the 16 samples, rounded half up, saturated to 255.
-inline UInt<8> resolve_box(const SampleColour (&s)[kSamplesPerPixel]) {
-  UFixed<20, 12> sum;
-  for (int k = 0; k < kSamplesPerPixel; ++k) sum = UFixed<20, 12>(sum + s[k]);
-  const UFixed<8, 8, Quant::kRound, Overflow::kSat> mean(UFixed<20, 8>::from_raw(sum.raw()));  // / 16
-  return mean.raw();
+// Box filter over the S x S = 4^t samples of a pixel (t = side_log2 <= 3). The sum of up to 64
+// samples below 256 is exact in UFixed<22, 14>; the mean is the sum / 4^t, rounded half up, saturated
+// to 255: the raw sum (8 fractional bits) shifted right by 8 + 2t with half an LSB added.
+using BoxSum = UFixed<22, 14>;
+inline UInt<8> resolve_box_sum(const BoxSum& sum, int side_log2) {
+  const int shift = 8 + 2 * side_log2;
+  const std::uint64_t mean = (std::uint64_t(sum.raw().value()) + (std::uint64_t{1} << (shift - 1))) >> shift;
+  return UInt<8>(mean > 255u ? 255u : mean);
+}
+inline UInt<8> resolve_box(const SampleColour (&s)[kMaxSamplesPerPixel], int side_log2) {
+  BoxSum sum;
+  for (int k = 0; k < kMaxSamplesPerPixel; ++k) {
+    if (k >= (1 << (2 * side_log2))) break;
+    sum = BoxSum(sum + s[k]);
+  }
+  return resolve_box_sum(sum, side_log2);
 }
 
 CIG_HLS_END_NAMESPACE

@@ -3,10 +3,11 @@
 // and keeps per pixel the samples already owned and the running sum of their colours.
 //
 // A record's samples that no earlier polygon owns become this polygon's: each gets I and W = 1/Z
-// at its own position from the pixel's top-left value and the plane's gradients (16 sample lanes:
+// at its own position from the pixel's top-left value and the plane's gradients (S x S sample lanes,
+// 16 for the seeds' 4 x 4:
 // f + D di + E dj), colour x I, fog by 1/Z through the fog table, and is added to the pixel's sum
-// (exact: 16 samples of 8 fractional bits fit UFixed<20, 12>), which is the box filter's sum. The
-// pixel is full, and its bit in the level n-1 mask can be set, when all 16 samples are owned.
+// (exact: up to 64 samples of 8 fractional bits fit BoxSum, UFixed<22, 14>), which is the box filter's sum. The
+// pixel is full, and its bit in the level n-1 mask can be set, when all its samples are owned.
 //
 // Light points (SPEC B) are not polygons: the light point unit rasterises them before the frame's
 // polygons into a per-pixel cover: for every sample, the light with the earliest priority
@@ -24,15 +25,15 @@ CIG_HLS_BEGIN_NAMESPACE
 
 template <class P>
 struct QuadPixelState {
-  UInt<16> owned;            // samples some polygon owns
+  PixelSampleMask owned;     // samples some polygon owns (bit S dj + di)
   typename P::Accum sum[3];  // the owned samples' colours, summed
 };
 
 template <class P>
 struct QuadLightCover {
-  UInt<16> mask;                                   // samples a light covers
-  UInt<17> priority[kSamplesPerPixel];             // that light's priority position
-  typename P::Sample colour[kSamplesPerPixel][3];  // its colour at the sample
+  PixelSampleMask mask;                               // samples a light covers
+  UInt<17> priority[kMaxSamplesPerPixel];             // that light's priority position
+  typename P::Sample colour[kMaxSamplesPerPixel][3];  // its colour at the sample
 };
 
 template <class P>
@@ -44,19 +45,23 @@ struct QuadPixelTables {
 
 template <class P>
 void quad_pixel_clear(QuadPixelState<P>& st) {
-  st.owned = UInt<16>(0);
+  st.owned = PixelSampleMask(0);
   for (int c = 0; c < 3; ++c) st.sum[c] = typename P::Accum();
 }
 
-// One pixel record (a level-n window and its covered samples); returns the samples it took.
+// One pixel record (a level-n window and its covered samples, S = 2^side_log2 a side); returns
+// the samples it took.
 template <class P>
-UInt<16> quad_pixel_process(const QuadWindow<P>& px, const UInt<16>& samples, const QuadPixelTables<P>& t,
-                            const QuadLightCover<P>& lights, QuadPixelState<P>& st) {
-  const unsigned fresh = unsigned(samples.value()) & ~unsigned(st.owned.value()) & 0xFFFFu;
+PixelSampleMask quad_pixel_process(const QuadWindow<P>& px, const PixelSampleMask& samples, const QuadPixelTables<P>& t,
+                                   const QuadLightCover<P>& lights, QuadPixelState<P>& st,
+                                   int side_log2 = kDefaultSideLog2) {
+  const std::uint64_t fresh = samples.value() & ~st.owned.value();
   const QuadPolygon<P>& poly = px.poly;
-  for (int s = 0; s < kSamplesPerPixel; ++s) {
+  const int side = 1 << side_log2;
+  for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
+    if (s >= side * side) break;
     if (((fresh >> s) & 1u) == 0) continue;
-    const int di = s & 3, dj = s >> 2;
+    const int di = s & (side - 1), dj = s >> side_log2;
     const bool light_shows = lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value();
     typename P::Sample colour[3];
     if (light_shows) {
@@ -72,30 +77,31 @@ UInt<16> quad_pixel_process(const QuadWindow<P>& px, const UInt<16>& samples, co
     }
     for (int c = 0; c < 3; ++c) st.sum[c] = P::accumulate(st.sum[c], colour[c]);
   }
-  st.owned = UInt<16>(st.owned.value() | fresh);
-  return UInt<16>(fresh);
+  st.owned = PixelSampleMask(st.owned.value() | fresh);
+  return PixelSampleMask(fresh);
 }
 
 // The pixel's final colour: owned samples as summed, the others show their light or the
 // background; the box filter's mean, rounded.
 template <class P>
 void quad_pixel_resolve(const QuadPixelState<P>& st, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
-                        UInt<8> (&rgb)[3]) {
+                        UInt<8> (&rgb)[3], int side_log2 = kDefaultSideLog2) {
   typename P::Accum sum[3];
   for (int c = 0; c < 3; ++c) sum[c] = st.sum[c];
-  for (int s = 0; s < kSamplesPerPixel; ++s) {
+  for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
+    if (s >= (1 << (2 * side_log2))) break;
     if (st.owned.bit(s)) continue;
     for (int c = 0; c < 3; ++c)
       sum[c] = P::accumulate(sum[c], lights.mask.bit(s) ? lights.colour[s][c] : P::level_sample(t.background[c]));
   }
-  for (int c = 0; c < 3; ++c) rgb[c] = P::resolve(sum[c]);
+  for (int c = 0; c < 3; ++c) rgb[c] = P::resolve(sum[c], side_log2);
 }
 
 // Top function (HLS): one pixel record into the pixel's state, default format.
-inline UInt<16> quadtree_pixel_top(const QuadWindow<DefaultQuadArith>& px, UInt<16> samples,
-                                   const QuadPixelTables<DefaultQuadArith>& t,
-                                   const QuadLightCover<DefaultQuadArith>& lights,
-                                   QuadPixelState<DefaultQuadArith>& st) {
+inline PixelSampleMask quadtree_pixel_top(const QuadWindow<DefaultQuadArith>& px, PixelSampleMask samples,
+                                          const QuadPixelTables<DefaultQuadArith>& t,
+                                          const QuadLightCover<DefaultQuadArith>& lights,
+                                          QuadPixelState<DefaultQuadArith>& st) {
   return quad_pixel_process(px, samples, t, lights, st);
 }
 

@@ -9,7 +9,7 @@
 //   VertexI, VertexZ   a vertex's intensity and depth as the setup reads them
 //   Value              a vertex parameter value in value units (records.hpp)
 //   Gradient, Param    D, E and plane values F, f
-//   Sample, Accum      a sample's colour component; a pixel's sum of 16 of them
+//   Sample, Accum      a sample's colour component; a pixel's sum of its S x S samples
 // and the operations below.
 #pragma once
 
@@ -29,17 +29,14 @@ struct QuadFixedArith : PlaneFixedArith<Fmt> {
   using typename Base::Gradient;
   using typename Base::Param;
   using typename Base::Sample;
-  using Accum = UFixed<20, 12>;  // a pixel's 16 samples summed: exact
+  using Accum = BoxSum;  // a pixel's samples (up to 64) summed: exact (sample_colour.hpp)
 
   // The parameter recurrence of seed 004: f + 2^k D (and likewise E), exact. With k <= 12 the
   // shifted gradient has V + 13 + G bits, below the parameter's V + 16 + G.
   static Param step(const Param& f, const Gradient& g, int k) { return wrap<Fmt::kParamWidth>(f + (Param(g) << k)); }
   static Accum accumulate(const Accum& a, const Sample& s) { return Accum(a + s); }
-  // The box filter: the mean of the 16 samples, rounded half up, saturated (= resolve_box).
-  static UInt<8> resolve(const Accum& sum) {
-    const UFixed<8, 8, Quant::kRound, Overflow::kSat> mean(UFixed<20, 8>::from_raw(sum.raw()));
-    return mean.raw();
-  }
+  // The box filter: the mean of the pixel's 4^t samples, rounded half up, saturated (= resolve_box).
+  static UInt<8> resolve(const Accum& sum, int side_log2) { return resolve_box_sum(sum, side_log2); }
 };
 
 using DefaultQuadArith = QuadFixedArith<QuadFormatDefault>;

@@ -6,22 +6,23 @@
 //                             parameter planes D i + E j + F) and its level-0 QuadWindow
 //     quadtree_pe_top      -> the covered children of one window (coverage recurrence d_i,
 //                             full-coverage test, parameter recurrence f_i, mask skip), at the
-//                             pixel level with their 16-bit sample masks
+//                             pixel level with their S x S-bit sample masks
 //     mask memory          -> 4-bit priority masks of every window of levels 0..n-1
 //     pixel processor      -> samples: colour x I, fog by 1/Z, front-to-back sub-pixel
 //                             resolve; box filter
 //
-// Geometry. The raster has N = 2^n pixels a side (16 <= N <= 1024) and 4 x 4 samples per pixel
-// on the formatter's sample lattice (hls/formatter/sample_lattice.hpp), so the lattice is 4N x 4N;
-// sample (i, j) lies at half-unit position (s i + o, s j + o), with half units = 2 x formatter grid
-// units, s = 2^(11 - n) and o = 2^(10 - n) - 2 (LatticeGeometry).
+// Geometry. The raster has N = 2^n pixels a side (16 <= N <= 1024) and S x S samples per pixel,
+// S = 2^t (t = side_log2 0..3, default 2: the seeds' 4 x 4 and the RTL's), on the formatter's
+// sample lattice (hls/formatter/sample_lattice.hpp), so the lattice is SN x SN; sample (i, j) lies
+// at half-unit position (s i + o, s j + o), with half units = 2 x formatter grid units,
+// s = 2^(13 - n - t) and o = 2^(12 - n - t) - 2 (LatticeGeometry).
 // Level l (0..n) of the subdivision splits the screen into 2^l x 2^l windows of 2^(n - l) pixels,
-// i.e. 2^(n - l + 2) samples a side; window (x, y) of level l has its top-left sample at
-// (x, y) * 2^(n - l + 2). Level n windows are pixels. Children are numbered q = 2 y_bit + x_bit
+// i.e. 2^(n - l + t) samples a side; window (x, y) of level l has its top-left sample at
+// (x, y) * 2^(n - l + t). Level n windows are pixels. Children are numbered q = 2 y_bit + x_bit
 // (0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right).
 //
-// The filter aperture of seed 004 (alpha x beta at the pixel level) is realised by the 16 point
-// samples: on the 4N lattice the aperture is alpha = beta = 0 (point sampling); measured in
+// The filter aperture of seed 004 (alpha x beta at the pixel level) is realised by the S x S point
+// samples: on the SN lattice the aperture is alpha = beta = 0 (point sampling); measured in
 // pixels, a window of level l spans 2^(n-l) - 1/4 pixels of sample positions, i.e. eq. 2's window
 // 2^(n-l) - 1 + alpha with alpha = beta = 3/4.
 #pragma once
@@ -45,7 +46,7 @@ constexpr int kQuadChildren = 4;
 // E(i, j) = A i + B j + C on the sample lattice; a sample is inside an edge when E >= 0. With
 // half-unit vertex differences |dx|, |dy| <= 8190 and s <= 128: |A|, |B| <= 8190 * 128 < 2^20;
 // |C| < 2 * 8190 * 8252 < 2^27.1; any window's d (the value at one lattice point, |i|, |j| < 2^12
-// with |A| * 4N <= 8190 * 2^13) lies below 2^28.2. Edge gradient: Int<22>; d: Int<32> (margin).
+// with |A| * SN <= 8190 * 2^13 for any lattice of SN <= 4096) lies below 2^28.2. Edge gradient: Int<22>; d: Int<32> (margin).
 // The tie rule of the reference (a sample on an edge belongs to the polygon whose inward gradient
 // points along +x, or +y for horizontal edges) is folded into C: an edge that does not own its
 // ties has C decreased by one, so "E > 0" becomes "E - 1 >= 0" (E is an integer). Every test is
@@ -102,11 +103,11 @@ struct QuadWindow {
 // What a PE decides for one child (sub-window) of a window.
 template <class P>
 struct QuadChild {
-  bool masked = false;   // skipped: its priority-mask bit was set
-  bool covered = false;  // may overlap the polygon (pixel level: some sample covered)
-  bool full = false;     // every sample of the child is covered (set the mask if opaque)
-  UInt<16> samples;      // pixel level: covered samples, bit 4 dj + di (screen door applied)
-  QuadWindow<P> window;  // the child, valid when covered
+  bool masked = false;      // skipped: its priority-mask bit was set
+  bool covered = false;     // may overlap the polygon (pixel level: some sample covered)
+  bool full = false;        // every sample of the child is covered (set the mask if opaque)
+  PixelSampleMask samples;  // pixel level: covered samples, bit S dj + di (screen door applied)
+  QuadWindow<P> window;     // the child, valid when covered
 };
 
 // Setup output: up to three pieces, each a polygon record and its level-0 window.

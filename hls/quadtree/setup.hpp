@@ -5,8 +5,8 @@
 //
 // d_0. Seed 004: d_0 = A x_c + B y_c + C + [|A| (2^n - 1 + alpha) + |B| (2^n - 1 + beta)] / 2, the
 // maximum of the edge function over the aperture-widened screen. On the 4N x 4N sample lattice
-// (alpha = beta = 0, records.hpp) with x_c = y_c = (4N - 1) / 2 this is
-// d_0 = C + (4N - 1) (max(A, 0) + max(B, 0)): the value at the screen's corner sample that
+// (alpha = beta = 0, records.hpp; SN x SN for S samples a side) with x_c = y_c = (SN - 1) / 2
+// this is d_0 = C + (SN - 1) (max(A, 0) + max(B, 0)): the value at the screen's corner sample that
 // maximises the edge function, an integer.
 //
 // Edges. For the edge from vertex k to k+1 (half units hx, hy; dx, dy the differences) and the
@@ -74,8 +74,9 @@ inline int ceil_shift(int t, int ls) { return (t + (1 << ls) - 1) >> ls; }
 inline int floor_shift(int t, int ls) { return t >> ls; }
 
 // d_0: the edge function at the screen corner sample that maximises it.
-inline EdgeValue root_coverage(const EdgeGradient& a, const EdgeGradient& b, const Int<29>& c, int raster_log2) {
-  const std::int64_t span = (std::int64_t{kSamplesPerSide} << raster_log2) - 1;  // 4N - 1 sample steps
+inline EdgeValue root_coverage(const EdgeGradient& a, const EdgeGradient& b, const Int<29>& c,
+                               const LatticeGeometry& g) {
+  const std::int64_t span = std::int64_t{g.rows()} - 1;  // SN - 1 sample steps
   const std::int64_t ap = a.value() > 0 ? a.value() : 0, bp = b.value() > 0 ? b.value() : 0;
   return EdgeValue(c.value() + span * (ap + bp));
 }
@@ -83,9 +84,8 @@ inline EdgeValue root_coverage(const EdgeGradient& a, const EdgeGradient& b, con
 // One convex piece: vertices idx[0..m) of the input (half units hx, hy given).
 template <class P>
 void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices],
-                 const int (&idx)[kQuadMaxEdges], int m, int raster_log2, int e_min, QuadWindow<P>& root,
+                 const int (&idx)[kQuadMaxEdges], int m, const LatticeGeometry& g, int e_min, QuadWindow<P>& root,
                  UInt<3>& bbox_added, bool& ok) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
   const int ls = g.log2_half_spacing;  // log2 s
   const int o = g.offset_half;         // half-unit position of sample 0
   // Twice the signed area (Newell's nz; eq. 5-6 of seed 001 has the same sum).
@@ -117,7 +117,7 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
       edge_line(hx[idx[k]], hy[idx[k]], hx[idx[k1]], hy[idx[k1]], sigma, ls, o, poly.a[k], poly.b[k], c);
       used = k + 1;
     }
-    root.d[k] = root_coverage(poly.a[k], poly.b[k], c, raster_log2);
+    root.d[k] = root_coverage(poly.a[k], poly.b[k], c, g);
   }
 
   // Bounding-box edges: left, right, top, bottom, each unless a polygon edge already lies on that
@@ -162,7 +162,7 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
     }
     poly.a[used] = EdgeGradient(av);
     poly.b[used] = EdgeGradient(bv);
-    root.d[used] = root_coverage(poly.a[used], poly.b[used], Int<29>(cv), raster_log2);
+    root.d[used] = root_coverage(poly.a[used], poly.b[used], Int<29>(cv), g);
     ++used;
     ++added;
   }
@@ -177,7 +177,7 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
     vz[k] = in.v[k].z;
   }
   AttributePlanes<P> planes;
-  fit_attribute_planes<P>(vi, vz, hx, hy, idx, m, nz, raster_log2, e_min, planes);
+  fit_attribute_planes<P>(vi, vz, hx, hy, idx, m, nz, g.raster_log2, e_min, planes, g.side_log2);
   for (int p = 0; p < kQuadParams; ++p) {
     poly.dp_di[p] = planes.d[p];
     poly.dp_dj[p] = planes.e[p];
@@ -189,9 +189,12 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
 }  // namespace quad_detail
 
 // Setup of one polygon: drops repeated consecutive vertices (the formatter can merge two), splits
-// it into pieces of at most kQuadMaxEdges vertices, and sets up each piece. raster_log2 = n.
+// it into pieces of at most kQuadMaxEdges vertices, and sets up each piece. raster_log2 = n,
+// side_log2 = t (S = 2^t samples a side per pixel).
 template <class P>
-void quadtree_setup(const QuadPrimitiveInput<P>& in, int raster_log2, QuadSetup<P>& out) {
+void quadtree_setup(const QuadPrimitiveInput<P>& in, int raster_log2, QuadSetup<P>& out,
+                    int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
   int hx[kMaxVertices], hy[kMaxVertices], keep[kMaxVertices];
   int m = 0;
   const int n = int(in.n.value());
@@ -241,7 +244,7 @@ void quadtree_setup(const QuadPrimitiveInput<P>& in, int raster_log2, QuadSetup<
     }
     bool ok = false;
     UInt<3> bbox;
-    quad_detail::setup_piece(kept, hx, hy, idx, len, raster_log2, e_min, out.root[count], bbox, ok);
+    quad_detail::setup_piece(kept, hx, hy, idx, len, g, e_min, out.root[count], bbox, ok);
     if (ok) {
       out.bbox_edges[count] = bbox;
       ++count;

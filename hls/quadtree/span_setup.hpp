@@ -28,7 +28,8 @@ void span_input_from_setup(const QuadPrimitiveInput<P>& in, FormattedPrimitive& 
 // vertices on one line: the polygon covers nothing).
 template <class P>
 void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece& piece, int raster_log2,
-                               QuadWindow<P>& root, bool& ok) {
+                               QuadWindow<P>& root, bool& ok, int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
   const int n = int(in.n.value());
   int hx[kMaxVertices], hy[kMaxVertices];
   int e_min = 255;
@@ -46,9 +47,8 @@ void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece&
   if (!ok) return;
   int idx[kQuadMaxEdges] = {0, best, best + 1, 0, 0, 0, 0, 0};
   UInt<3> bbox;
-  quad_detail::setup_piece(in, hx, hy, idx, 3, raster_log2, e_min, root, bbox, ok);
+  quad_detail::setup_piece(in, hx, hy, idx, 3, g, e_min, root, bbox, ok);
   if (!ok) return;
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
   const int lt = int(piece.left_top.value()), lb = int(piece.left_bottom.value());
   const int rt = int(piece.right_top.value()), rb = int(piece.right_bottom.value());
   QuadPolygon<P>& poly = root.poly;
@@ -62,8 +62,7 @@ void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece&
     poly.b[k] = EdgeGradient(k == 2 ? 1 : (k == 3 ? -1 : 0));
     c[k] = Int<29>(k == 2 ? -int(piece.row_first.value()) : (k == 3 ? int(piece.row_last.value()) : 0));
   }
-  for (int k = 0; k < kQuadMaxEdges; ++k)
-    root.d[k] = quad_detail::root_coverage(poly.a[k], poly.b[k], c[k], raster_log2);
+  for (int k = 0; k < kQuadMaxEdges; ++k) root.d[k] = quad_detail::root_coverage(poly.a[k], poly.b[k], c[k], g);
   poly.edge_count = UInt<4>(4);
 }
 

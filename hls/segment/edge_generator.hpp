@@ -73,8 +73,8 @@ typename P::Area polygon_header(const FormattedPrimitiveT<Q>& in, PolygonHeader<
 
 // Raster lines crossed per field: even lines go to one segment-memory bank, odd lines to the other.
 template <class P>
-void count_lines(PolygonHeader<P>& h) {
-  const int line_first = h.row_first >> 2, line_last = h.row_last >> 2;
+void count_lines(PolygonHeader<P>& h, int side_log2) {
+  const int line_first = h.row_first >> side_log2, line_last = h.row_last >> side_log2;
   const int lines = line_last - line_first + 1;
   const int even = (lines + ((line_first & 1) == 0 ? 1 : 0)) >> 1;
   h.segments_even = UInt<11>(even);
@@ -83,16 +83,18 @@ void count_lines(PolygonHeader<P>& h) {
 
 }  // namespace detail
 
-// raster_log2 = n for an N = 2^n raster (kMinRasterLog2..kMaxRasterLog2).
+// raster_log2 = n for an N = 2^n raster (kMinRasterLog2..kMaxRasterLog2), side_log2 = t for
+// S = 2^t sample rows per line (lattice_supported).
 template <class P, class Q>
-void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEdges<P>& out) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int rows = kRowsPerLine << raster_log2;
+void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEdges<P>& out,
+                    int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
+  const int rows = g.rows();
   const int n = int(in.n.value());
   PolygonHeader<P>& h = out.h;
   out.valid = false;
   const typename P::Area twice = detail::polygon_header(in, h);
-  P::fit_planes(in, raster_log2, false, h.planes);
+  P::fit_planes(in, raster_log2, false, h.planes, side_log2);
   int top = 0, bottom = 0;  // the Y extremes
   for (int j = 0; j < kMaxVertices; ++j) {
     if (j >= n) break;
@@ -128,7 +130,7 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
   const int lc = int(h.left_count.value());
   h.row_first = out.left[0].row_first;
   h.row_last = out.left[lc - 1].row_last;
-  detail::count_lines(h);
+  detail::count_lines(h, side_log2);
   out.valid = true;
 }
 

@@ -15,22 +15,23 @@ constexpr int kMaxLightSegments = kMaxLightRows;
 // The fixed-point light path; the double twin (cmodel) uses the exact chord instead of the table.
 template <class P>
 int generate_light_segments(const FormattedPrimitive& light, int raster_log2, UInt<3> channel,
-                            Segment<P> (&out)[kMaxLightSegments]) {
+                            Segment<P> (&out)[kMaxLightSegments], int side_log2 = kDefaultSideLog2) {
   LightChord chords[kMaxLightRows];
-  const int count = light_chords(light, raster_log2, chords);
+  const int count = light_chords(light, raster_log2, chords, side_log2);
+  const int within = (1 << side_log2) - 1;  // row within its line
   for (int k = 0; k < kMaxLightRows; ++k) {
     if (k >= count) break;
     const int row = chords[k].row, cx2 = chords[k].centre_half, w = chords[k].w;
     Segment<P>& s = out[k];
-    s.line = UInt<10>(row >> 2);
+    s.line = UInt<10>(row >> side_log2);
     s.type = UInt<3>(kSegWhole);
-    s.row_first = UInt<2>(row & 3);
+    s.row_first = UInt<3>(row & within);
     s.row_last = s.row_first;
     // [X - w/2, X + (w + 1)/2): exact in any X format with a fractional bit.
     const typename P::X xl(Fixed<15, 14>::from_raw(Int<15>(cx2 - w)));
     const typename P::X xr(Fixed<15, 14>::from_raw(Int<15>(cx2 + w + 1)));
-    s.xl[row & 3] = xl;
-    s.xr[row & 3] = xr;
+    s.xl[row & within] = xl;
+    s.xr[row & within] = xr;
     s.il = typename P::Intensity(light.v[0].i);
     s.ir = s.il;
     s.zl = light.v[0].z;

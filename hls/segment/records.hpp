@@ -15,16 +15,18 @@
 //                             Z, priority, 4 x 4 sub-pixel coverage)
 //
 // Geometry: the formatter grid and the sample lattice of hls/formatter/sample_lattice.hpp (grid
-// units X, Y in 0..4095; raster line L holds the 4 sample rows 4L + r, r = 0..3; positions in half
-// units, exact for 16 <= N <= 1024).
+// units X, Y in 0..4095; with S = 2^t samples a side per pixel, raster line L holds the S sample
+// rows SL + r, r = 0..S-1; positions in half units, exact for lattices of 64..4096 rows; the
+// seeds' S = 4 is the default).
 #pragma once
 
 #include "hls/formatter/records.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
-constexpr int kRowsPerLine = kSamplesPerSide;    // sample rows per raster line
-constexpr int kMaxEdgesPerChain = kMaxVertices;  // a chain can hold every edge of the polygon
+constexpr int kRowsPerLine = kSamplesPerSide;        // sample rows per raster line, default lattice
+constexpr int kMaxRowsPerLine = kMaxSamplesPerSide;  // ... on the finest lattice (8 x 8 per pixel)
+constexpr int kMaxEdgesPerChain = kMaxVertices;      // a chain can hold every edge of the polygon
 
 // ---- Edge generator output / frame memory contents ----------------------------------------------
 // One edge of a left or right chain, as the preprocessor needs it: the sample rows it spans, its
@@ -79,13 +81,13 @@ template <class P>
 struct Segment {
   UInt<10> line;                // raster line 0..N-1
   UInt<3> type;                 // kSegTop .. kSegWhole
-  UInt<2> row_first, row_last;  // covered sample rows within the line
-  // Left and right X at each of the line's 4 sample rows (rows outside row_first..row_last
+  UInt<3> row_first, row_last;  // covered sample rows within the line (0..S-1)
+  // Left and right X at each of the line's S sample rows (rows outside row_first..row_last
   // unused). The seed's segment carries four X values (left and right at the top and bottom of
   // the line) and interpolates between them; where a chain vertex lies inside the line that
   // misplaces the middle rows and opens cracks between neighbouring polygons, so the rows are
   // stored exactly (SegmentOptions::seed_quadrilateral restores the seed's interpolation).
-  typename P::X xl[kRowsPerLine], xr[kRowsPerLine];
+  typename P::X xl[kMaxRowsPerLine], xr[kMaxRowsPerLine];
   typename P::Intensity il, ir;  // eq. 3 at the ends, at the covered rows' centre
   typename P::Depth zl, zr;      // eq. 4 at the ends
   UInt<16> source;               // polygon id, or light id when is_light

@@ -46,7 +46,8 @@ struct FixedSegmentArith {
   // or on its fan triangle (0, k, k + 1) of largest area (a polygon that snapping made non-convex:
   // every span piece gets the same planes). A polygon of no area gets zero planes (it draws
   // nothing).
-  static void fit_planes(const FormattedPrimitive& in, int raster_log2, bool fan_triangle, Planes& out) {
+  static void fit_planes(const FormattedPrimitive& in, int raster_log2, bool fan_triangle, Planes& out,
+                         int side_log2 = kDefaultSideLog2) {
     int hx[kMaxVertices], hy[kMaxVertices], idx[kMaxVertices];
     typename Plane::VertexI vi[kMaxVertices];
     typename Plane::VertexZ vz[kMaxVertices];
@@ -73,7 +74,7 @@ struct FixedSegmentArith {
     }
     out = Planes();
     if (m < 3 || nz.value() == 0) return;
-    fit_attribute_planes<Plane>(vi, vz, hx, hy, idx, m, nz, raster_log2, e_min, out);
+    fit_attribute_planes<Plane>(vi, vz, hx, hy, idx, m, nz, raster_log2, e_min, out, side_log2);
   }
   // The vertices without consecutive (and closing) repeats, as the quadtree setup keeps them.
   static int distinct_vertices(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], int n,
@@ -149,11 +150,11 @@ struct FixedSegmentArith {
   // slope's format), rounded to X (the accumulator is exact in hardware; rounding happens when
   // the value leaves it).
   static X step(const Slope& x, const Slope& s, int rows) { return X(x + Fixed<13, 13>::from_raw(Int<13>(rows)) * s); }
-  // Linear interpolation x0 + (x1 - x0) * num / den (den in 1..3: the video channel's rows).
+  // Linear interpolation x0 + (x1 - x0) * num / den (den in 1..7: a line's rows, S <= 8).
   static X lerp_x(const X& x0, const X& x1, int num, int den) {
     const auto diff = x1 - x0;
-    const auto scaled = diff * Fixed<3, 3>::from_raw(Int<3>(num));
-    return X(x0 + fixed_div<X>(scaled, Fixed<3, 3>::from_raw(Int<3>(den))));
+    const auto scaled = diff * Fixed<4, 4>::from_raw(Int<4>(num));
+    return X(x0 + fixed_div<X>(scaled, Fixed<4, 4>::from_raw(Int<4>(den))));
   }
 
   // Where on the edge eq. 3-4 are evaluated: yt (quarter units) below yb, clamped to the edge
@@ -213,7 +214,7 @@ struct FixedSegmentArith {
   static Sample shade(const Level& c, const Intensity& i) { return ::cig::hls::shade(c, i); }
   static Sample mix(const Sample& s, const Level& fog, const FogFactor& f) { return fog_mix(s, fog, f); }
   static Sample level_sample(const Level& c) { return ::cig::hls::level_sample(c); }
-  static UInt<8> resolve(const Sample (&s)[16]) { return resolve_box(s); }
+  static UInt<8> resolve(const Sample (&s)[kMaxSamplesPerPixel], int side_log2) { return resolve_box(s, side_log2); }
 
   // The video channel's sample columns: first column i with X_i >= x, and first with X_i >= x
   // (exclusive end for a right edge), where 2 X_i = (u/2) i + u/4 - 2 (half units).

@@ -35,30 +35,33 @@ typename P::X x_at_row(const Edge<P>& e, int k) {
 // Writes the polygon's segments, top line first, to out[0..count); returns count.
 template <class P>
 int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channel, bool seed_quadrilateral,
-                      Segment<P> (&out)[kMaxLines]) {
+                      Segment<P> (&out)[kMaxLines], int side_log2 = kDefaultSideLog2) {
   if (!in.valid) return 0;
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
+  const int side = g.side();  // S sample rows per line
   const PolygonHeader<P>& h = in.h;
   const int lc = int(h.left_count.value()), rc = int(h.right_count.value());
-  const int line_first = h.row_first >> 2, line_last = h.row_last >> 2;
+  const int line_first = h.row_first >> side_log2, line_last = h.row_last >> side_log2;
   int le = 0, re = 0;  // current edges of the left and right chains
   int count = 0;
   for (int line = 0; line < kMaxLines; ++line) {
     const int L = line_first + line;
     if (L > line_last) break;
-    const int rf = h.row_first > 4 * L ? h.row_first : 4 * L;        // first covered row
-    const int rl = h.row_last < 4 * L + 3 ? h.row_last : 4 * L + 3;  // last covered row
-    const int rm = (rf + rl) >> 1;                                   // the row I and Z use
-    const int yt_quarter = g.sample_half(rf) + g.sample_half(rl);    // centre of rf..rl, quarter units
+    const int top_row = side * L, bottom_row = side * L + side - 1;
+    const int rf = h.row_first > top_row ? h.row_first : top_row;      // first covered row
+    const int rl = h.row_last < bottom_row ? h.row_last : bottom_row;  // last covered row
+    const int rm = (rf + rl) >> 1;                                     // the row I and Z use
+    const int yt_quarter = g.sample_half(rf) + g.sample_half(rl);      // centre of rf..rl, quarter units
     Segment<P>& s = out[count++];
     s.line = UInt<10>(L);
     const bool top = rf == h.row_first, bottom = rl == h.row_last;
     s.type = UInt<3>(top && bottom ? kSegWhole : top ? kSegTop : bottom ? kSegBottom : kSegMiddle);
-    s.row_first = UInt<2>(rf - 4 * L);
-    s.row_last = UInt<2>(rl - 4 * L);
+    s.row_first = UInt<3>(rf - top_row);
+    s.row_last = UInt<3>(rl - top_row);
     int lm = le, rmi = re;
-    for (int r = 0; r < kRowsPerLine; ++r) {
-      const int k = 4 * L + r;
+    for (int r = 0; r < kMaxRowsPerLine; ++r) {
+      if (r >= side) break;
+      const int k = top_row + r;
       if (k < rf || k > rl) continue;
       le = detail::edge_for_row(in.left, lc, le, k);  // X advances by the slope, edge by edge
       re = detail::edge_for_row(in.right, rc, re, k);
@@ -70,8 +73,9 @@ int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channe
       }
     }
     if (seed_quadrilateral && rl - rf >= 2) {
-      const int a = rf - 4 * L, b = rl - 4 * L;
-      for (int r = 1; r < kRowsPerLine - 1; ++r) {
+      const int a = rf - top_row, b = rl - top_row;
+      for (int r = 1; r < kMaxRowsPerLine - 1; ++r) {
+        if (r >= side - 1) break;
         if (r <= a || r >= b) continue;
         s.xl[r] = P::lerp_x(s.xl[a], s.xl[b], r - a, b - a);
         s.xr[r] = P::lerp_x(s.xr[a], s.xr[b], r - a, b - a);

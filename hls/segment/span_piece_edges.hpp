@@ -14,12 +14,12 @@ CIG_HLS_BEGIN_NAMESPACE
 // over those rows (the first crossing at the piece's first row, as the preprocessor computes it).
 template <class P, class Q>
 void generate_span_piece_edges(const FormattedPrimitiveT<Q>& in, const SpanPiece& piece, int raster_log2,
-                               PolygonEdges<P>& out) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int rows = kRowsPerLine << raster_log2;
+                               PolygonEdges<P>& out, int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
+  const int rows = g.rows();
   PolygonHeader<P>& h = out.h;
   detail::polygon_header(in, h);
-  P::fit_planes(in, raster_log2, true, h.planes);
+  P::fit_planes(in, raster_log2, true, h.planes, side_log2);
   const int first = int(piece.row_first.value()), last = int(piece.row_last.value());
   const int ends[2][2] = {{int(piece.left_top.value()), int(piece.left_bottom.value())},
                           {int(piece.right_top.value()), int(piece.right_bottom.value())}};
@@ -38,7 +38,7 @@ void generate_span_piece_edges(const FormattedPrimitiveT<Q>& in, const SpanPiece
   out.valid = h.left_count.value() == 1 && h.right_count.value() == 1;
   h.row_first = first;
   h.row_last = last;
-  detail::count_lines(h);
+  detail::count_lines(h, side_log2);
 }
 
 // Top function (HLS): the default format.

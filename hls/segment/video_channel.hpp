@@ -3,7 +3,7 @@
 // sample rows, the samples with left X <= X_i < right X (left edges inclusive, right edges
 // exclusive: the float reference's tie rule). A sample takes the colour of the
 // first segment that covers it (visibility by priority): colour x I, I interpolated along the
-// segment, then fog by Z (interpolated along the segment, looked up in the fog table). The 4 x 4
+// segment, then fog by Z (interpolated along the segment, looked up in the fog table). The S x S
 // samples of a pixel are averaged (the anti-aliasing filter). The per-pixel polygon id is the
 // polygon owning most of the pixel's samples, light points aside (as in the float reference).
 #pragma once
@@ -29,9 +29,9 @@ struct VideoTables {
 
 template <class P>
 struct LineBuffer {
-  typename P::Sample rgb[kRowsPerLine][kMaxLatticeSize][3];
-  bool owned[kRowsPerLine][kMaxLatticeSize];
-  int polygon[kRowsPerLine][kMaxLatticeSize];  // first polygon covering the sample, -1 none
+  typename P::Sample rgb[kMaxRowsPerLine][kMaxLatticeSize][3];
+  bool owned[kMaxRowsPerLine][kMaxLatticeSize];
+  int polygon[kMaxRowsPerLine][kMaxLatticeSize];  // first polygon covering the sample, -1 none
 };
 
 struct PixelLine {
@@ -68,13 +68,14 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
   const bool planes = t.plane_mode && !s.is_light;  // I and 1/Z from the polygon's planes
   // The seed's interpolation along the segment: one reciprocal per segment (planes need none).
   const typename P::Reciprocal inv = planes ? typename P::Reciprocal() : P::reciprocal(typename P::X(xrt - xlt));
-  for (int r = 0; r < kRowsPerLine; ++r) {
+  for (int r = 0; r < kMaxRowsPerLine; ++r) {
+    if (r >= g.side()) break;
     if (r < rf || r > rl) continue;
     int i0 = P::first_column_at_or_after(g, s.xl[r]);
     int i1 = P::first_column_at_or_after(g, s.xr[r]) - 1;  // right end exclusive
     if (i0 < 0) i0 = 0;
     if (i1 > cols - 1) i1 = cols - 1;
-    const int row = 4 * line + r;
+    const int row = g.side() * line + r;
     for (int k = 0; k < kMaxLatticeSize; ++k) {
       const int i = i0 + k;
       if (i > i1) break;
@@ -100,18 +101,68 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
 
 }  // namespace detail
 
-// Renders raster line `line` of an N = 2^raster_log2 raster; returns the segments it read.
+// The majority owner of a pixel's samples: most samples wins; ties go to the earlier polygon; the
+// background (-1) loses ties (as the float reference).
+inline int majority_polygon(const int (&ids)[kMaxSamplesPerPixel], int count) {
+  bool uniform = true;  // the common case: one owner for the whole pixel
+  for (int a = 1; a < kMaxSamplesPerPixel; ++a) {
+    if (a >= count) break;
+    uniform = uniform && ids[a] == ids[0];
+  }
+  if (uniform) return ids[0];
+  int best = -1, best_count = 0;
+  for (int a = 0; a < kMaxSamplesPerPixel; ++a) {
+    if (a >= count) break;
+    int n = 0;
+    for (int b = 0; b < kMaxSamplesPerPixel; ++b) {
+      if (b >= count) break;
+      n += ids[b] == ids[a] ? 1 : 0;
+    }
+    const bool better = n > best_count || (n == best_count && ids[a] != best &&
+                                           (best == -1 ? ids[a] >= 0 : (ids[a] >= 0 && ids[a] < best)));
+    if (better) {
+      best = ids[a];
+      best_count = n;
+    }
+  }
+  return best;
+}
+
+// Box filter and majority id of pixel px from the line buffer (S x S samples, S = g.side()).
+template <class P>
+void resolve_pixel(int px, const LatticeGeometry& g, const VideoTables<P>& t, const LineBuffer<P>& w, PixelLine& out) {
+  const int side = g.side();
+  typename P::Sample s[3][kMaxSamplesPerPixel];
+  int ids[kMaxSamplesPerPixel];
+  for (int r = 0; r < kMaxRowsPerLine; ++r) {
+    if (r >= side) break;
+    for (int q = 0; q < kMaxRowsPerLine; ++q) {
+      if (q >= side) break;
+      const int i = side * px + q;
+      for (int c = 0; c < 3; ++c)
+        s[c][side * r + q] = w.owned[r][i] ? w.rgb[r][i][c] : P::level_sample(t.background[c]);
+      ids[side * r + q] = w.polygon[r][i];
+    }
+  }
+  for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve(s[c], g.side_log2);
+  out.id[px] = majority_polygon(ids, side * side);
+}
+
+// Renders raster line `line` of an N = 2^raster_log2 raster with S = 2^side_log2 sample rows per
+// line; returns the segments it read.
 template <class P, int K>
 int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t, LineBuffer<P>& w,
-                PixelLine& out) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2);
-  const int n = 1 << raster_log2, cols = kRowsPerLine * n;
-  for (int r = 0; r < kRowsPerLine; ++r)
+                PixelLine& out, int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
+  const int n = 1 << raster_log2, cols = g.rows();
+  for (int r = 0; r < kMaxRowsPerLine; ++r) {
+    if (r >= g.side()) break;
     for (int i = 0; i < kMaxLatticeSize; ++i) {
       if (i >= cols) break;
       w.owned[r][i] = false;
       w.polygon[r][i] = -1;
     }
+  }
   const int b = line & 1;
   int p = m.head[line];
   int read = 0;
@@ -121,41 +172,12 @@ int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const V
     ++read;
     p = m.next[b][p];
   }
-  // Box filter and majority id per pixel.
   for (int px = 0; px < kMaxLines; ++px) {
     if (px >= n) break;
-    typename P::Sample s[3][16];
-    int ids[16];
-    for (int r = 0; r < kRowsPerLine; ++r)
-      for (int q = 0; q < kRowsPerLine; ++q) {
-        const int i = 4 * px + q;
-        for (int c = 0; c < 3; ++c) s[c][4 * r + q] = w.owned[r][i] ? w.rgb[r][i][c] : P::level_sample(t.background[c]);
-        ids[4 * r + q] = w.polygon[r][i];
-      }
-    for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve(s[c]);
-    bool uniform = true;  // the common case: one owner for the whole pixel
-    for (int a = 1; a < 16; ++a) uniform = uniform && ids[a] == ids[0];
-    if (uniform) {
-      out.id[px] = ids[0];
-      continue;
-    }
-    int best = -1, best_count = 0;
-    for (int a = 0; a < 16; ++a) {
-      int count = 0;
-      for (int b2 = 0; b2 < 16; ++b2) count += ids[b2] == ids[a] ? 1 : 0;
-      // Most samples wins; ties go to the earlier polygon; the background (-1) loses ties.
-      const bool better = count > best_count || (count == best_count && ids[a] != best &&
-                                                 (best == -1 ? ids[a] >= 0 : (ids[a] >= 0 && ids[a] < best)));
-      if (better) {
-        best = ids[a];
-        best_count = count;
-      }
-    }
-    out.id[px] = best;
+    resolve_pixel(px, g, t, w, out);
   }
   return read;
 }
-
 inline int video_channel_top(UInt<10> line, UInt<4> raster_log2, const SegmentMemory<DefaultSegmentArith>& m,
                              const VideoTables<DefaultSegmentArith>& t, LineBuffer<DefaultSegmentArith>& w,
                              PixelLine& out) {

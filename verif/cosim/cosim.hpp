@@ -87,9 +87,9 @@ class TraceRecorder final : public quad::ArchTracer<P> {
     t_.pe[std::size_t(pe)].push_back(
         {EventKind::kEmit, cycle, child, 0, full, pack_record(L_, c.w, unsigned(c.samples.value()))});
   }
-  void pixel(long long cycle, int unit, const quad::QuadItem<P>& r, unsigned fresh, bool full) override {
+  void pixel(long long cycle, int unit, const quad::QuadItem<P>& r, std::uint64_t fresh, bool full) override {
     t_.pixel[std::size_t(unit)].push_back(
-        {EventKind::kPixel, cycle, 0, fresh, full, pack_record(L_, r.w, unsigned(r.samples.value()))});
+        {EventKind::kPixel, cycle, 0, unsigned(fresh), full, pack_record(L_, r.w, unsigned(r.samples.value()))});
   }
   void mask_set(long long cycle, int level, int x, int y, int child) override {
     t_.mask_sets.push_back({cycle, level, x, y, child});

@@ -117,7 +117,7 @@ enum class RecordField {
 template <class P>
 struct RecordFields {
   using Window = hls::QuadWindow<P>;
-  using Samples = decltype(hls::QuadChild<P>::samples);
+  using Samples = hls::UInt<hls::kSamplesPerPixel>;  // the RTL: the seeds' 4 x 4 lattice
 
   // Calls visit(field, name, member) for every field in order; member is the hls/ value (an
   // array for per-edge, per-parameter and per-channel fields).

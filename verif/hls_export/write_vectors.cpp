@@ -435,7 +435,7 @@ void write_quadtree_pixel(const std::string& dir, const Sources& s, Rng& rng) {
   for (int run = 0; run < 6; ++run) {
     in->lights = {};
     if (run % 2 == 1) {
-      in->lights.mask = hls::UInt<16>(rng.below(1 << 16));
+      in->lights.mask = hls::PixelSampleMask(rng.below(1 << 16));
       for (int k = 0; k < hls::kSamplesPerPixel; ++k) {
         in->lights.priority[k] = hls::UInt<17>(rng.below(200));
         for (int c = 0; c < 3; ++c)
@@ -447,7 +447,7 @@ void write_quadtree_pixel(const std::string& dir, const Sources& s, Rng& rng) {
     for (int k = 0; k < in->calls; ++k) {
       const hls::QuadChild<QuadP>& c = d.pixels[std::size_t(rng.below(int(d.pixels.size())))];
       in->px[k] = c.window;
-      in->samples[k] = rng.chance(0.8) ? c.samples : hls::UInt<16>(rng.below(1 << 16));
+      in->samples[k] = rng.chance(0.8) ? c.samples : hls::PixelSampleMask(rng.below(1 << 16));
     }
     file.add(*in);
   }

@@ -585,21 +585,25 @@ void work_policy_ops(Digest* dg) {
     add(raw_of(sh));
     add(raw_of(mx));
   }
-  // The box filter: the mean of 16 samples rounded half up, saturated to 255.
-  for (int t = 0; t < 4000 * scale_of(dg); ++t) {
-    typename P::Sample s16[16];
-    i128 sum = 0;
-    const int mode = t % 3;
-    for (int k = 0; k < 16; ++k) {
-      const std::int64_t v = mode == 0   ? below(rng, 65536)
-                             : mode == 1 ? between(rng, 65280, 65535)
-                                         : between(rng, 0, 300);
-      s16[k] = P::Sample::from_raw_value(std::uint64_t(v));
-      sum += v;
+  // The box filter: the mean of the 4^t samples rounded half up, saturated to 255, for every
+  // lattice t = 0..3 (the digest takes the seeds' 4 x 4 only, first: its draws are unchanged).
+  for (const int side_log2 : {kDefaultSideLog2, 0, 1, 3}) {
+    const int count = 1 << (2 * side_log2);
+    for (int t = 0; t < 4000 * scale_of(dg); ++t) {
+      typename P::Sample samples[kMaxSamplesPerPixel];
+      i128 sum = 0;
+      const int mode = t % 3;
+      for (int k = 0; k < count; ++k) {
+        const std::int64_t v = mode == 0   ? below(rng, 65536)
+                               : mode == 1 ? between(rng, 65280, 65535)
+                                           : between(rng, 0, 300);
+        samples[k] = P::Sample::from_raw_value(std::uint64_t(v));
+        sum += v;
+      }
+      const UInt<8> px = P::resolve(samples, side_log2);
+      ASSERT_TRUE(i128(px.value()) == clampi(round_half_up(sum, 256 * count), 0, 255));
+      if (side_log2 == kDefaultSideLog2) add(std::int64_t(px.value()));
     }
-    const UInt<8> px = P::resolve(s16);
-    ASSERT_TRUE(i128(px.value()) == clampi(round_half_up(sum, 4096), 0, 255));
-    add(std::int64_t(px.value()));
   }
   for (int c = 0; c < 256; ++c) ASSERT_EQ(raw_of(P::level_sample(UInt<8>(c))), 256 * c);
 }

@@ -1,7 +1,7 @@
 // Span pieces (hls/formatter/span_pieces.hpp) against an exact crossing-number count: on polygons
 // that snapping to the formatter grid makes non-convex, self-intersecting or reversed, and on wild
 // random polygons, every sample of the lattice is covered by exactly as many pieces as the crossing
-// rule says (0 or 1: the pieces are disjoint), at several rasters.
+// rule says (0 or 1: the pieces are disjoint), at several rasters and sample lattices (1 to 64 samples per pixel).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,12 +21,16 @@
 namespace cig::hls::segtest {
 namespace {
 
-// Half-unit position of sample k on an N = 2^log2 raster (README: pixel p spans grid units
-// [u p - 1, u p - 1 + u), u = 4096 / N, its 4 samples at u p - 1 + (2 s + 1) u / 8).
-std::int64_t sample_half(int log2, std::int64_t k) {
-  const std::int64_t u = 4096 >> log2;
-  return k * (u / 2) + u / 4 - 2;
+// Half-unit position of sample k on an N = 2^log2 raster with S = 2^side_log2 samples a side per
+// pixel (README: pixel p spans grid units [u p - 1, u p - 1 + u), u = 4096 / N, its S samples at
+// u p - 1 + (2 s + 1) u / (2S)).
+std::int64_t sample_half(int log2, std::int64_t k, int side_log2 = kDefaultSideLog2) {
+  const std::int64_t u = 4096 >> log2, side = std::int64_t{1} << side_log2;
+  return k * (2 * u / side) + u / side - 2;
 }
+
+// The lattice of test polygon `index`: S = 1, 2, 4 and 8 samples a side in turn, with SN = 2^lattice_log2.
+int side_log2_for(int index) { return (index / 3) % 4; }
 
 // The crossing rule on the sample perturbed to (x + e, y + e^2): an odd number of edges cross
 // the row right of it (half-open Y ranges; a crossing at x exactly lies left of x + e).
@@ -216,12 +220,12 @@ QuadPrimitiveInput<QP> quad_input(const IntPolygon& p) {
 }
 
 // Samples covered by the setup and the PE (a walk of the covered windows down to the pixels, no
-// masks) of every span piece, counted per sample: 4N x 4N.
-std::vector<int> quadtree_samples(const IntPolygon& p, int log2, int& pieces_out) {
-  const int m = 4 << log2;
+// masks) of every span piece, counted per sample: SN x SN.
+std::vector<int> quadtree_samples(const IntPolygon& p, int log2, int side_log2, int& pieces_out) {
+  const int m = 1 << (log2 + side_log2), side_px = 1 << side_log2;
   std::vector<int> got(std::size_t(m) * std::size_t(m), 0);
   auto pieces = std::make_unique<SpanPieces>();
-  split_into_span_pieces(fixed_input(p), log2, *pieces);
+  split_into_span_pieces(fixed_input(p), log2, *pieces, side_log2);
   pieces_out = pieces->convex ? -1 : int(pieces->count.value());
   if (pieces->convex) return got;
   const QuadPrimitiveInput<QP> in = quad_input(p);
@@ -229,25 +233,25 @@ std::vector<int> quadtree_samples(const IntPolygon& p, int log2, int& pieces_out
   for (int k = 0; k < int(pieces->count.value()); ++k) {
     QuadWindow<QP> root;
     bool ok = false;
-    quadtree_setup_span_piece(in, pieces->piece[k], log2, root, ok);
+    quadtree_setup_span_piece(in, pieces->piece[k], log2, root, ok, side_log2);
     if (ok) stack.push_back(root);
   }
   while (!stack.empty()) {
     const QuadWindow<QP> w = stack.back();
     stack.pop_back();
-    const int level = int(w.level.value()) + 1, side = 4 << (log2 - level);
+    const int level = int(w.level.value()) + 1, side = side_px << (log2 - level);
     for (int q = 0; q < 4; ++q) {
       QuadChild<QP> c;
-      evaluate_child(w, q, log2, false, c);
+      evaluate_child(w, q, log2, false, c, side_log2);
       if (!c.covered) continue;
       if (level < log2) {
         stack.push_back(c.window);
         continue;
       }
       const int x0 = (2 * int(w.x.value()) + (q & 1)) * side, y0 = (2 * int(w.y.value()) + (q >> 1)) * side;
-      for (int b = 0; b < 16; ++b)
+      for (int b = 0; b < side_px * side_px; ++b)
         if ((c.samples.value() >> b) & 1u)
-          ++got[std::size_t(y0 + (b >> 2)) * std::size_t(m) + std::size_t(x0 + (b & 3))];
+          ++got[std::size_t(y0 + (b >> side_log2)) * std::size_t(m) + std::size_t(x0 + (b & (side_px - 1)))];
     }
   }
   return got;
@@ -263,17 +267,18 @@ TEST(SpanPieces, QuadtreeCoversTheCrossingRule) {
     if (!bent_polygon(rng, wild, p)) continue;
     p.opaque = true;
     for (int k = 0; k < p.n; ++k) p.z[k] = 127 << 7, p.i[k] = 128;
-    const int log2 = 5 + polygons % 3;
+    const int t2 = side_log2_for(polygons), log2 = 7 + polygons % 3 - t2;
     int pieces = 0;
-    const std::vector<int> got = quadtree_samples(p, log2, pieces);
+    const std::vector<int> got = quadtree_samples(p, log2, t2, pieces);
     if (pieces < 0) continue;  // convex after all (a wild one): the convex setup's tests cover it
-    const int m = 4 << log2;
+    const int m = 1 << (log2 + t2);
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i) {
-        const bool want = odd_crossings(p, sample_half(log2, i), sample_half(log2, j));
+        const bool want = odd_crossings(p, sample_half(log2, i, t2), sample_half(log2, j, t2));
         ASSERT_EQ(got[std::size_t(j) * std::size_t(m) + std::size_t(i)], want ? 1 : 0)
             << "polygon " << polygons << " (" << (wild ? "wild" : "snapped") << ", " << pieces
-            << " pieces) at N = " << (1 << log2) << ", sample (" << i << ", " << j << ")";
+            << " pieces) at N = " << (1 << log2) << ", " << (1 << t2) << " samples a side, sample (" << i << ", " << j
+            << ")";
         covered += want;
       }
     ++polygons;
@@ -288,24 +293,24 @@ using SP = DefaultSegmentArith;
 
 // Samples covered by the edge generator's span pieces and the segment generator's segments (their
 // X at each row to the first column at or after it, as the video channel draws), counted per
-// sample: 4N x 4N.
-std::vector<int> segment_samples(const IntPolygon& p, int log2) {
-  const int m = 4 << log2;
+// sample: SN x SN.
+std::vector<int> segment_samples(const IntPolygon& p, int log2, int side_log2) {
+  const int m = 1 << (log2 + side_log2);
   std::vector<int> got(std::size_t(m) * std::size_t(m), 0);
   auto pieces = std::make_unique<SpanPieces>();
   const FormattedPrimitive f = fixed_input(p);
-  split_into_span_pieces(f, log2, *pieces);
-  const LatticeGeometry g = LatticeGeometry::for_raster(log2);
+  split_into_span_pieces(f, log2, *pieces, side_log2);
+  const LatticeGeometry g = LatticeGeometry::for_raster(log2, side_log2);
   auto edges = std::make_unique<PolygonEdges<SP>>();
   auto segments = std::make_unique<std::array<Segment<SP>, kMaxLines>>();
   auto& out = *reinterpret_cast<Segment<SP>(*)[kMaxLines]>(segments->data());
   for (int k = 0; k < int(pieces->count.value()); ++k) {
-    generate_span_piece_edges<SP>(f, pieces->piece[k], log2, *edges);
-    const int count = generate_segments<SP>(*edges, log2, UInt<3>(0), false, out);
+    generate_span_piece_edges<SP>(f, pieces->piece[k], log2, *edges, side_log2);
+    const int count = generate_segments<SP>(*edges, log2, UInt<3>(0), false, out, side_log2);
     for (int t = 0; t < count; ++t) {
       const Segment<SP>& s = out[t];
       for (int r = int(s.row_first.value()); r <= int(s.row_last.value()); ++r) {
-        const int row = 4 * int(s.line.value()) + r;
+        const int row = g.side() * int(s.line.value()) + r;
         const int i0 = std::max(0, SP::first_column_at_or_after(g, s.xl[r]));
         const int i1 = std::min(m - 1, SP::first_column_at_or_after(g, s.xr[r]) - 1);
         for (int i = i0; i <= i1; ++i) ++got[std::size_t(row) * std::size_t(m) + std::size_t(i)];
@@ -324,15 +329,15 @@ TEST(SpanPieces, SegmentProcessorCoversTheCrossingRule) {
     const bool wild = t % 3 == 0;
     if (!bent_polygon(rng, wild, p)) continue;
     if (turns_one_way(p)) continue;  // convex: the convex edge generator's tests cover it
-    const int log2 = 5 + polygons % 4;
-    const std::vector<int> got = segment_samples(p, log2);
-    const int m = 4 << log2;
+    const int t2 = side_log2_for(polygons), log2 = 7 + polygons % 4 - t2;
+    const std::vector<int> got = segment_samples(p, log2, t2);
+    const int m = 1 << (log2 + t2);
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i) {
-        const bool want = odd_crossings(p, sample_half(log2, i), sample_half(log2, j));
+        const bool want = odd_crossings(p, sample_half(log2, i, t2), sample_half(log2, j, t2));
         ASSERT_EQ(got[std::size_t(j) * std::size_t(m) + std::size_t(i)], want ? 1 : 0)
-            << "polygon " << polygons << " (" << (wild ? "wild" : "snapped") << ") at N = " << (1 << log2)
-            << ", sample (" << i << ", " << j << ")";
+            << "polygon " << polygons << " (" << (wild ? "wild" : "snapped") << ") at N = " << (1 << log2) << ", "
+            << (1 << t2) << " samples a side, sample (" << i << ", " << j << ")";
         covered += want;
       }
     ++polygons;

@@ -70,6 +70,25 @@ TEST_P(StressClasses, EveryEngineWithinTheBound) {
   }
 }
 
+// The sample lattice as a kernel parameter: at 1, 4 and 64 samples per pixel both bit-accurate
+// engines take exactly the snapped reference's samples at that lattice (no other id anywhere) and
+// stay within the bound, on every class (seed 1). The coverage proofs (sample_lattice.hpp) depend
+// on the lattice's size only, and so does the bound (a per-sample bound averages to a per-pixel one).
+TEST_P(StressClasses, EveryLatticeWithinTheBound) {
+  const std::string name = GetParam();
+  const ScreenFrame f = cli::make_stress_list(name, 1);
+  for (const char* spp : {"1", "4", "64"}) {
+    const EngineRun reference = run(f, "float", true, {{"visibility", "priority"}, {"spp", spp}});
+    for (const char* e : {"segment", "quadtree"}) {
+      const EngineRun got = run(f, e, false, {{"spp", spp}});
+      EXPECT_EQ(got.report.at("samples_per_pixel").get<int>(), std::stoi(spp));
+      const Difference d = difference(got, reference);
+      EXPECT_EQ(d.ids, 0) << name << " spp " << spp << " " << e;
+      EXPECT_LE(d.max_abs, kBoundLsb) << name << " spp " << spp << " " << e;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllClasses, StressClasses, testing::ValuesIn(cli::stress_class_names()),
                          [](const testing::TestParamInfo<std::string>& i) {
                            std::string n = i.param;

@@ -278,9 +278,9 @@ struct Timed {
 
 class NullSink final : public PixelSink<AnalysisArith> {
  public:
-  unsigned pixel(int, const QuadItem<AnalysisArith>& it, bool& full) override {
+  std::uint64_t pixel(int, const QuadItem<AnalysisArith>& it, bool& full) override {
     full = false;
-    return unsigned(it.samples.value());
+    return it.samples.value();
   }
 };
 
@@ -404,7 +404,7 @@ TEST(ArchitectureCycles, StackIsNeverFasterThanThePipeline) {
 class OwnerSink final : public PixelSink<AnalysisArith> {
  public:
   explicit OwnerSink(int n) : side_(1 << n), owner_(std::size_t(side_) * side_ * 16, -1) {}
-  unsigned pixel(int, const QuadItem<AnalysisArith>& it, bool& full) override {
+  std::uint64_t pixel(int, const QuadItem<AnalysisArith>& it, bool& full) override {
     const std::size_t pix = std::size_t(it.w.y.value()) * std::size_t(side_) + std::size_t(it.w.x.value());
     unsigned fresh = 0, owned = 0;
     for (int s = 0; s < 16; ++s) {

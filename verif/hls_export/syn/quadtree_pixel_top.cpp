@@ -2,10 +2,10 @@
 // scope).
 #include "hls/quadtree/pixel_processor.hpp"
 
-cig::hls::UInt<16> quadtree_pixel_top(const cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& px,
-                                      cig::hls::UInt<16> samples,
-                                      const cig::hls::QuadPixelTables<cig::hls::DefaultQuadArith>& t,
-                                      const cig::hls::QuadLightCover<cig::hls::DefaultQuadArith>& lights,
-                                      cig::hls::QuadPixelState<cig::hls::DefaultQuadArith>& st) {
+cig::hls::PixelSampleMask quadtree_pixel_top(const cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& px,
+                                             cig::hls::PixelSampleMask samples,
+                                             const cig::hls::QuadPixelTables<cig::hls::DefaultQuadArith>& t,
+                                             const cig::hls::QuadLightCover<cig::hls::DefaultQuadArith>& lights,
+                                             cig::hls::QuadPixelState<cig::hls::DefaultQuadArith>& st) {
   return cig::hls::quadtree_pixel_top(px, samples, t, lights, st);
 }

@@ -9,11 +9,11 @@
 #include "hls/quadtree/pixel_processor.hpp"
 #include "hls/quadtree/quadtree_arith.hpp"
 
-cig::hls::UInt<16> quadtree_pixel_top(const cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& px,
-                                      cig::hls::UInt<16> samples,
-                                      const cig::hls::QuadPixelTables<cig::hls::DefaultQuadArith>& t,
-                                      const cig::hls::QuadLightCover<cig::hls::DefaultQuadArith>& lights,
-                                      cig::hls::QuadPixelState<cig::hls::DefaultQuadArith>& st);
+cig::hls::PixelSampleMask quadtree_pixel_top(const cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& px,
+                                             cig::hls::PixelSampleMask samples,
+                                             const cig::hls::QuadPixelTables<cig::hls::DefaultQuadArith>& t,
+                                             const cig::hls::QuadLightCover<cig::hls::DefaultQuadArith>& lights,
+                                             cig::hls::QuadPixelState<cig::hls::DefaultQuadArith>& st);
 
 namespace cig::hls_tb {
 
@@ -49,10 +49,10 @@ struct QuadtreePixelTopCase {
     hls::QuadPixelState<P> state;
     int calls = 0;
     hls::QuadWindow<P> px[kCalls];
-    hls::UInt<16> samples[kCalls];
+    hls::PixelSampleMask samples[kCalls];
   };
   struct Output {
-    hls::UInt<16> result[kCalls];
+    hls::PixelSampleMask result[kCalls];
     hls::QuadPixelState<P> state[kCalls];
   };
   static void run(const Input& i, Output& o) {
@@ -65,11 +65,11 @@ struct QuadtreePixelTopCase {
   template <class V>
   static void ports(V& v, const Input& i, const Output& o) {
     v("px", "in", "const QuadWindow<DefaultQuadArith>&", i.px[0]);
-    v("samples", "in", "UInt<16>", i.samples[0]);
+    v("samples", "in", "PixelSampleMask", i.samples[0]);
     v("t", "in", "const QuadPixelTables<DefaultQuadArith>&", i.tables);
     v("lights", "in", "const QuadLightCover<DefaultQuadArith>&", i.lights);
     v("st", "inout", "QuadPixelState<DefaultQuadArith>&", i.state);
-    v("return", "out", "UInt<16>", o.result[0]);
+    v("return", "out", "PixelSampleMask", o.result[0]);
   }
 };
 template <>
