@@ -13,6 +13,8 @@ void Commands::add_to(CLI::App& app) {
   sweep.add_to(app);
   arch.add_to(app);
   stress.add_to(app);
+  cull.add_to(app);
+  manager.add_to(app);
   // Listed for --help; `cig cosim ...` never reaches the parser (main.cpp forwards it to cig-cosim).
   app.add_subcommand("cosim",
                      "co-simulate the quadtree RTL against the kernels and the architecture model (runs cig-cosim; "
@@ -39,6 +41,8 @@ int Commands::run() {
   if (*sweep.sub) return sweep.run();
   if (*arch.sub) return arch.run();
   if (*stress.sub) return stress.run();
+  if (*cull.sub) return cull.run();
+  if (*manager.sub) return manager.run();
   return 0;
 }
 

@@ -6,6 +6,8 @@
 
 #include "cli/arch_command.hpp"
 #include "cli/compare_command.hpp"
+#include "cli/cull_command.hpp"
+#include "cli/manager_command.hpp"
 #include "cli/polys_command.hpp"
 #include "cli/raster_command.hpp"
 #include "cli/render_command.hpp"
@@ -22,6 +24,8 @@ struct Commands {
   SweepCommand sweep;
   ArchCommand arch;
   StressCommand stress;
+  CullCommand cull;
+  ManagerCommand manager;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

@@ -142,8 +142,8 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
   for (const PriorityEntry& entry : list.objects) {
     const Object& object = scene.objects[entry.object];
     const WorldObject& wobject = db.objects[entry.object];
-    g.light_points(object, wobject);
-    for (std::uint32_t si : entry.subobjects)
+    if (entry.lights) g.light_points(object, wobject);
+    for (std::uint32_t si : list.run(entry))
       g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
   }
   stats.polygons_out += f.polygons.size();

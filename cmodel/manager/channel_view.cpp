@@ -23,6 +23,7 @@ ChannelView make_channel_view(const Scene& scene, int frame, int channel) {
   v.world_to_eye = swap * world_to_body;
   v.tan_half_fov = std::tan(glm::radians(0.5 * ch.fov_deg));
   v.near = scene.near;
+  v.range = scene.range;
   return v;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
@@ -19,6 +20,7 @@ struct ChannelView {
   glm::dmat3 world_to_eye;  // rotation part; eye = world_to_eye * (p - eye)
   double tan_half_fov = 1;
   double near = 1;
+  double range = std::numeric_limits<double>::infinity();  // objects wholly deeper are culled (Scene::range)
 
   glm::dvec3 to_eye(const glm::dvec3& world) const { return world_to_eye * (world - eye); }
 };

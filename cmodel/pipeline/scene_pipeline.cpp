@@ -12,20 +12,41 @@
 
 namespace cig {
 
-ScenePipeline::ScenePipeline(const Scene& scene) : scene_(scene), db_(build_world_database(scene)) {}
+ScenePipeline::ScenePipeline(const Scene& scene, const CullSettings& culling)
+    : scene_(scene), db_(build_world_database(scene)), tree_(std::make_unique<SceneQuadtree>(db_)) {
+  manager_.tree = tree_.get();
+  manager_.culling = culling;
+}
 
 ScreenFrame ScenePipeline::geometry(int frame, int channel, nlohmann::ordered_json& report) const {
   const auto t0 = Clock::now();
   const ChannelView view = make_channel_view(scene_, frame, channel);
   SceneManagerStats ms;
-  PriorityList list = manage_channel(db_, view, ms);
+  PriorityList list = manage_channel(db_, view, ms, manager_);
   ms.ms = ms_since(t0);
   GeometryStats gs;
   ScreenFrame f = process_channel(scene_, db_, view, list, gs);
+  nlohmann::ordered_json sizes = nlohmann::ordered_json::object();
+  for (std::size_t k = 2; k < ms.group_sizes.size(); ++k)
+    if (ms.group_sizes[k]) sizes[std::to_string(k)] = ms.group_sizes[k];
   report["scene_manager"] = {{"objects", ms.objects},
                              {"objects_visible", ms.objects_visible},
                              {"subobjects_tested", ms.subobjects_tested},
                              {"subobjects_visible", ms.subobjects_visible},
+                             {"occlusion_groups",
+                              {{"groups", ms.groups},
+                               {"objects_in_groups_of_2_or_more", ms.grouped_objects},
+                               {"largest", ms.largest_group},
+                               {"groups_by_size", sizes},
+                               {"sphere_pairs_tested", ms.pair_tests}}},
+                             {"culling",
+                              {{"method", cull_method_name(manager_.culling.method)},
+                               {"tree_nodes", tree_->node_count()},
+                               {"nodes_visited", ms.cull.nodes_visited},
+                               {"nodes_kept", ms.cull.nodes_kept},
+                               {"objects_kept", ms.cull.objects_kept},
+                               {"tree_ms", ms.cull.ms},
+                               {"sphere_tests_ms", ms.sphere_ms}}},
                              {"ms", ms.ms}};
   report["geometry"] = {{"polygons_in", gs.polygons_in},
                         {"backfacing", gs.backfacing},

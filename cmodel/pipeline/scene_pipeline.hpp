@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
+#include "manager/scene_manager.hpp"
 #include "scene/world_database.hpp"
 
 namespace cig {
@@ -22,7 +23,9 @@ struct ChannelOutput {
 
 class ScenePipeline {
  public:
-  explicit ScenePipeline(const Scene& scene);
+  // The world's quadtree is built once; culling selects how the scene manager walks it (seed 003's
+  // line of sight by default; the visible objects are the same whatever the method).
+  explicit ScenePipeline(const Scene& scene, const CullSettings& culling = {});
   const Scene& scene() const { return scene_; }
 
   // Stages A and B for one channel: the polygon list a raster engine receives.
@@ -36,6 +39,8 @@ class ScenePipeline {
  private:
   const Scene& scene_;
   WorldDatabase db_;
+  std::unique_ptr<SceneQuadtree> tree_;
+  ManagerOptions manager_;
   // Engines kept across frames, one per worker (engines hold multi-megabyte memories, and the
   // segment processor's frame memory alternates banks from frame to frame).
   struct EngineSlot {

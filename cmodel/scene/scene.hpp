@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,9 @@ struct Scene {
   std::string name;
   int raster = 512;
   double near = 1.0;
+  // Visibility range (eye depth, metres): objects whose bounding sphere lies wholly beyond it are
+  // not drawn (the scene manager culls them); unlimited by default.
+  double range = std::numeric_limits<double>::infinity();
   std::vector<Channel> channels;
   Lighting lighting;
   Fog fog;

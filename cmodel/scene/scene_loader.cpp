@@ -320,8 +320,12 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
     s.raster = int(n);
   }
   if (auto v = root.find("view")) {
-    v->allow_only({"near", "light_point_min_diameter"});
+    v->allow_only({"near", "range", "light_point_min_diameter"});
     if (v->has("near")) s.near = v->at("near").number(kMinNear, kMaxNear);
+    if (v->has("range")) {
+      s.range = v->at("range").number(kMinNear, 1e9);
+      if (!(s.range > s.near)) v->at("range").fail("the visibility range must lie beyond the near plane");
+    }
     if (v->has("light_point_min_diameter"))
       s.light_rendering.min_diameter_units = v->at("light_point_min_diameter").number(0, 7);
   }

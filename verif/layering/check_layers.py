@@ -21,6 +21,7 @@ ALLOWED = {
     "hls/pixel": {"hls/types", "hls/formatter"},
     "hls/segment": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/quadtree": {"hls/types", "hls/formatter", "hls/pixel"},
+    "hls/manager": {"hls/types"},                                              # stage A (seed 000)
     # C model, in pipeline order
     "cmodel/common": set(),
     "cmodel/scene": {"cmodel/common"},
