@@ -91,14 +91,14 @@ int CullCommand::run() {
   for (int frame = a; frame <= b; ++frame)
     for (int c = 0; c < int(scene.channels.size()); ++c, ++channels) {
       const ChannelView view = make_channel_view(scene, frame, c);
-      ManagerOptions brute;
-      CullRow truth{CullMethod::kBruteForce};
-      const std::vector<std::uint32_t> want = run_method(db, view, brute, 1, truth);
-      for (CullRow& row : rows) {
+      std::vector<std::uint32_t> want;  // brute force (the last row) runs first: the others' truth
+      for (std::size_t k = 0; k < rows.size(); ++k) {
+        CullRow& row = rows[(k + rows.size() - 1) % rows.size()];
         ManagerOptions o;
         o.tree = row.method == CullMethod::kBruteForce ? nullptr : &tree;
         o.culling = {row.method, near_distance, far_distance};
         const std::vector<std::uint32_t> got = run_method(db, view, o, repeat, row);
+        if (row.method == CullMethod::kBruteForce) want = got;
         std::vector<std::uint32_t> missing, extra;
         std::set_difference(want.begin(), want.end(), got.begin(), got.end(), std::back_inserter(missing));
         std::set_difference(got.begin(), got.end(), want.begin(), want.end(), std::back_inserter(extra));

@@ -28,7 +28,10 @@ ChannelView make_channel_view(const Scene& scene, int frame, int channel) {
 }
 
 ViewPyramid::ViewPyramid(double t, double near)
-    : plane{{0, 0, 1, -near}, {1, 0, t, 0}, {-1, 0, t, 0}, {0, -1, t, 0}, {0, 1, t, 0}} {}
+    : plane{{0, 0, 1, -near}, {1, 0, t, 0}, {-1, 0, t, 0}, {0, -1, t, 0}, {0, 1, t, 0}} {
+  for (int k = 0; k < kClipPlanes; ++k)
+    norm[k] = std::sqrt(plane[k].a * plane[k].a + plane[k].b * plane[k].b + plane[k].c * plane[k].c);
+}
 
 std::uint8_t ViewPyramid::outcode(const glm::dvec3& e) const {
   std::uint8_t c = 0;

@@ -39,6 +39,7 @@ struct ClipPlane {
 // (stage A), the geometric processor clips polygons against it (stage B).
 struct ViewPyramid {
   ClipPlane plane[kClipPlanes];
+  double norm[kClipPlanes];  // |(a, b, c)| of each plane, for sphere tests
   ViewPyramid(double tan_half_fov, double near);
   std::uint8_t outcode(const glm::dvec3& e) const;  // planes the point lies outside of
 };

@@ -11,31 +11,20 @@
 namespace cig {
 
 bool sphere_may_be_visible(const ViewPyramid& pyramid, const glm::dvec3& c, double r) {
-  for (const ClipPlane& p : pyramid.plane)
-    if (p.distance(c) < -r * std::sqrt(p.a * p.a + p.b * p.b + p.c * p.c)) return false;
+  for (int k = 0; k < kClipPlanes; ++k)
+    if (pyramid.plane[k].distance(c) < -r * pyramid.norm[k]) return false;
   return true;
 }
 
 namespace {
 
-// The sphere test with the planes' norms taken once per channel, and the visibility range
-// (Scene::range: wholly deeper spheres are culled). The same decisions as sphere_may_be_visible.
+// The sphere test of the channel's pyramid and the visibility range (Scene::range: wholly deeper
+// spheres are culled).
 struct SphereTest {
   ViewPyramid pyramid;
-  double norm[kClipPlanes];
   double range;
-  explicit SphereTest(const ChannelView& view) : pyramid(view.tan_half_fov, view.near), range(view.range) {
-    for (int k = 0; k < kClipPlanes; ++k) {
-      const ClipPlane& p = pyramid.plane[k];
-      norm[k] = std::sqrt(p.a * p.a + p.b * p.b + p.c * p.c);
-    }
-  }
-  bool visible(const glm::dvec3& c, double r) const {
-    if (c.z - r > range) return false;
-    for (int k = 0; k < kClipPlanes; ++k)
-      if (pyramid.plane[k].distance(c) < -r * norm[k]) return false;
-    return true;
-  }
+  explicit SphereTest(const ChannelView& view) : pyramid(view.tan_half_fov, view.near), range(view.range) {}
+  bool visible(const glm::dvec3& c, double r) const { return c.z - r <= range && sphere_may_be_visible(pyramid, c, r); }
 };
 
 struct VisibleObject {

@@ -164,7 +164,6 @@ SceneQuadtree::SceneQuadtree(const WorldDatabase& db) : db_(db) {
 std::int32_t SceneQuadtree::build(std::vector<std::uint32_t>& ids, glm::dvec2 lo, glm::dvec2 hi, int depth) {
   const std::int32_t index = std::int32_t(nodes_.size());
   nodes_.emplace_back();
-  depth_ = std::max(depth_, depth);
   const glm::dvec2 mid = 0.5 * (lo + hi);
   std::vector<std::uint32_t> here, below[4];
   const bool leaf = ids.size() <= std::size_t(kLeafObjects) || depth >= kMaxDepth;
@@ -239,7 +238,8 @@ std::vector<std::uint32_t> SceneQuadtree::cull(const ChannelView& view, const Cu
   };
   std::vector<std::int32_t> stack{0};
   while (!stack.empty()) {
-    const Node& node = nodes_[std::size_t(stack.back())];
+    const std::int32_t self = stack.back();
+    const Node& node = nodes_[std::size_t(self)];
     stack.pop_back();
     ++stats.nodes_visited;
     Side side = Side::kPartial;
@@ -258,7 +258,6 @@ std::vector<std::uint32_t> SceneQuadtree::cull(const ChannelView& view, const Cu
     }
     if (side == Side::kOutside) continue;
     if (side == Side::kInside) {  // the whole subtree, untested
-      const std::int32_t self = std::int32_t(&node - nodes_.data());
       stats.nodes_kept += node.node_end - std::uint32_t(self);
       kept.insert(kept.end(), objects_.begin() + node.first, objects_.begin() + node.subtree_end);
       continue;

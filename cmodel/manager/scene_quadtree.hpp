@@ -69,7 +69,6 @@ class SceneQuadtree {
   std::vector<std::uint32_t> cull(const ChannelView& view, const CullSettings& settings, CullStats& stats) const;
 
   std::size_t node_count() const { return nodes_.size(); }
-  int depth() const { return depth_; }
 
  private:
   struct Node {
@@ -87,7 +86,6 @@ class SceneQuadtree {
   const WorldDatabase& db_;
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> objects_;  // by node, depth first (a subtree's objects are contiguous)
-  int depth_ = 0;
 };
 
 }  // namespace cig

@@ -209,9 +209,8 @@ class PixelFrame final : public PixelSink<P> {
 
  private:
   const hls::QuadLightCover<P>& cover(std::size_t pix) const {
-    static const hls::QuadLightCover<P> none{};
     const int ci = cover_index_[pix];
-    return ci >= 0 ? covers_[std::size_t(ci)] : none;
+    return ci >= 0 ? covers_[std::size_t(ci)] : no_cover_;
   }
 
   // The light point unit: every light's samples (the coding table's chords, hls/pixel/light_coding.hpp:
@@ -265,6 +264,9 @@ class PixelFrame final : public PixelSink<P> {
   std::vector<std::int32_t> owners_;
   std::vector<int> cover_index_;
   std::vector<hls::QuadLightCover<P>> covers_;
+  // A member rather than a function-local static: clang 14's ASan build once aborted (free():
+  // invalid pointer) compiling the static's guarded initialisation of this large aggregate.
+  hls::QuadLightCover<P> no_cover_{};
   long light_samples_ = 0;
   long long samples_written_ = 0;  // samples polygons took (the pixel processor's work)
 };
