@@ -1,5 +1,5 @@
 // cig render SCENE [--frame K | --frames A:B] [--channel C] [--out DIR] [--report FILE] [--ids]
-//                  [--threads N] + the engine options
+//                  [--threads N] [--pipelines N] + the engine options
 // Everything that can be wrong with the input is checked before anything is written.
 #include "cli/render_command.hpp"
 
@@ -24,6 +24,10 @@ void RenderCommand::add_to(CLI::App& app) {
   sub->add_option("--out", out_dir, "output directory (default out)");
   sub->add_option("--report", report_file, "report file (default DIR/report.json)");
   sub->add_option("--threads", threads, "worker threads over channels (default: cores)")->check(CLI::Range(1, 64));
+  sub->add_option("--pipelines", pipelines,
+                  "rendering pipelines per channel (seed 000's Nc): the channel's priority list split into N "
+                  "disjoint lists, each rasterised on its own thread, merged by priority (priority engines)")
+      ->check(CLI::Range(1, 16));
   sub->add_flag("--ids", write_ids_files, "also write per-channel id buffers (CIGIDS1)");
   engine.add_to(sub);
   model_limit.add_to(sub);
@@ -102,6 +106,7 @@ nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene,
   report["snap"] = eo.snap;
   report["raster"] = scene.raster;
   report["threads"] = c.threads;
+  report["pipelines"] = c.pipelines;
   report["scene_polygons"] = scene.polygon_count();
   report["scene_light_points"] = scene.light_point_count();
   report["load_ms"] = load_ms;
@@ -120,7 +125,9 @@ int RenderCommand::run() {
   int a = 0, b = 0;
   frame_range(frames_text, frame_k, frame_opt->count() > 0, scene.frame_count(), scene_file, a, b);
   const std::vector<int> channels = selected_channels(scene, channel);
-  make_engine(engine.engine, eo)->check_raster(scene.raster);
+  const auto probe = make_engine(engine.engine, eo);
+  probe->check_raster(scene.raster);
+  if (pipelines > 1) probe->check_renders_parts();
   check_output_dir(out_dir, "--out");
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
   else check_output_file(report_file, "--report");
@@ -133,7 +140,7 @@ int RenderCommand::run() {
   const auto t_all = Clock::now();
   for (int frame = a; frame <= b; ++frame) {
     const auto t_frame = Clock::now();
-    std::vector<ChannelOutput> outs = pipeline.render(frame, channels, engine.engine, eo, threads);
+    std::vector<ChannelOutput> outs = pipeline.render(frame, channels, engine.engine, eo, threads, pipelines);
     const double render_ms = ms_since(t_frame);
     const auto t_out = Clock::now();
     write_channel_images(scene, out_dir, frame, write_ids_files, outs);

@@ -14,6 +14,7 @@ struct RenderCommand {
   CLI::App* sub = nullptr;
   std::string scene_file, out_dir = "out", report_file, frames_text;
   int frame_k = -1, channel = -1, threads = 1;
+  int pipelines = 1;  // rendering pipelines per channel (seed 000's Nc)
   bool write_ids_files = false;
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;

@@ -45,10 +45,23 @@ class RasterEngine {
   void check_frame(const ScreenFrame& frame) const;
   void set_fan_split(bool on) { fan_split_ = on; }
 
+  // Seed 000's rendering channels: `parts` are N disjoint, contiguous slices of one channel's
+  // priority list (part 0 first, each with its own polygon and light indices); each part is
+  // rasterised by its own pipeline on its own worker thread and the video stage merges them sample
+  // by sample by priority (a sample shows the first part that covers it). For the engines that
+  // resolve visibility by priority the image and ids equal render() of the whole list (while no
+  // part's memories overflow where the whole list's do not). Ids are those of the whole list.
+  // Engines that do not merge parts (renders_parts() false) raise InputError.
+  EngineRun render_parts(const std::vector<ScreenFrame>& parts);
+  virtual bool renders_parts() const { return false; }
+  void check_renders_parts() const;  // InputError unless renders_parts()
+
  protected:
   // The engine proper, on the frame as split.
   virtual EngineRun render_frame(const ScreenFrame& frame) = 0;
   virtual void check_split_frame(const ScreenFrame& frame) const { check_raster(frame.raster); }
+  // The parts as split, rasterised and merged; ids of the concatenated split parts.
+  virtual EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts);
 
  private:
   bool fan_split_ = true;

@@ -190,6 +190,13 @@ void reverse_priority(PriorityList& list) {
   std::reverse(list.subobjects.begin(), list.subobjects.end());
   std::reverse(list.objects.begin(), list.objects.end());
   for (PriorityEntry& e : list.objects) e.first = total - e.first - e.count;
+  // Group g's entries [first_g, first_g+1) move to [n - first_g+1, n - first_g).
+  const std::uint32_t entries = std::uint32_t(list.objects.size());
+  std::vector<std::uint32_t> ends;
+  for (std::size_t g = 0; g < list.group_first.size(); ++g)
+    ends.push_back(g + 1 < list.group_first.size() ? list.group_first[g + 1] : entries);
+  list.group_first.clear();
+  for (std::size_t g = ends.size(); g-- > 0;) list.group_first.push_back(entries - ends[g]);
 }
 
 }  // namespace
@@ -222,9 +229,12 @@ PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, Sc
   for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
     const std::size_t size = starts[k + 1] - starts[k];
     count_group(size, stats);
+    if (list.group_first.empty() || list.group_first.back() != list.objects.size())
+      list.group_first.push_back(std::uint32_t(list.objects.size()));
     if (size == 1) emit_single(context, order[starts[k]], list);
     else emit_group(context, order.data() + starts[k], size, list);
   }
+  if (!list.group_first.empty() && list.group_first.back() == list.objects.size()) list.group_first.pop_back();
   if (options.back_to_front) reverse_priority(list);
   return list;
 }

@@ -48,8 +48,9 @@ struct PriorityEntry {
 };
 
 struct PriorityList {
-  std::vector<PriorityEntry> objects;     // priority order, highest first
-  std::vector<std::uint32_t> subobjects;  // the runs, one after another (no allocation per run)
+  std::vector<PriorityEntry> objects;      // priority order, highest first
+  std::vector<std::uint32_t> subobjects;   // the runs, one after another (no allocation per run)
+  std::vector<std::uint32_t> group_first;  // the entry each occlusion group (or lone object) starts at
   struct Run {
     const std::uint32_t *b, *e;
     const std::uint32_t* begin() const { return b; }

@@ -31,12 +31,21 @@ class ScenePipeline {
   // Stages A and B for one channel: the polygon list a raster engine receives.
   ScreenFrame geometry(int frame, int channel, nlohmann::ordered_json& report) const;
 
+  // Stages A and B for one channel split among `pipelines` rendering pipelines (seed 000's Nc,
+  // manager/pipeline_loading.hpp): one polygon list per pipeline, in priority order; the report
+  // gives each pipeline's polygons and the load balance (max / mean).
+  std::vector<ScreenFrame> geometry_parts(int frame, int channel, int pipelines, nlohmann::ordered_json& report) const;
+
   // A, B and the engine for the given channels of one frame; channels run on up to `threads`
-  // worker threads, each with its own engine instance.
+  // worker threads, each with its own engine instance. pipelines > 1: each channel's list split
+  // among that many rendering pipelines, each on its own thread, merged by the engine's video
+  // stage (RasterEngine::render_parts).
   std::vector<ChannelOutput> render(int frame, const std::vector<int>& channels, const std::string& engine,
-                                    const EngineOptions& options, int threads) const;
+                                    const EngineOptions& options, int threads, int pipelines = 1) const;
 
  private:
+  PriorityList manage(const ChannelView& view, nlohmann::ordered_json& report) const;
+
   const Scene& scene_;
   WorldDatabase db_;
   std::unique_ptr<SceneQuadtree> tree_;

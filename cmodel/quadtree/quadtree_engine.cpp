@@ -9,7 +9,9 @@
 
 #include "common/error.hpp"
 #include "common/timing.hpp"
+#include "engine/rendering_parts.hpp"
 #include "formatter/lattice_check.hpp"
+#include "quadtree/pixel_merge.hpp"
 #include "quadtree/quadtree_frame.hpp"
 
 namespace cig {
@@ -101,6 +103,32 @@ class QuadPipeline {
     return run;
   }
 
+  // One rendering pipeline's part (seed 000's Nc): front end, light point unit and PEs into its own
+  // pixel frame, which keeps its samples for the merge (quadtree/pixel_merge.hpp).
+  nlohmann::ordered_json rasterise_part(const ScreenFrame& part) {
+    const auto t0 = Clock::now();
+    const quad::Architecture arch = check_frame(part);
+    quad::ArchConfig cfg;
+    cfg.fifo_depth = options_.fifo;
+    cfg.masks = options_.masks;
+    cfg.side_log2 = options_.side_log2;
+    quad::FrontEndStats fe;
+    const std::vector<hls::QuadWindow<P>> roots = quad::front_end<P>(part, arch.raster_log2, fe, options_.side_log2);
+    pixels_.keep_samples(true);
+    pixels_.begin(part, arch.raster_log2, options_.side_log2);
+    hls::mask_clear(*masks_, arch.raster_log2);
+    quad::ArchModel<P> model(arch, cfg);
+    const quad::ArchStats st = model.run(roots, *masks_, pixels_);
+    return {{"polygons", part.polygons.size()},
+            {"light_points", part.light_points.size()},
+            {"pieces", roots.size()},
+            {"pixel_records", st.pixel_records},
+            {"samples_written", pixels_.samples_written()},
+            {"cycles", st.cycles},
+            {"ms", ms_since(t0)}};
+  }
+  const quad::PixelFrame<P>& pixels() const { return pixels_; }
+
  private:
   // What the frame did: the front end, the PEs level by level, the masks, the cycles per stage.
   void report(const ScreenFrame& frame, const quad::Architecture& arch, const quad::ArchModel<P>& model,
@@ -185,7 +213,8 @@ class QuadPipeline {
 template <class P>
 class QuadEngine : public RasterEngine {
  public:
-  QuadEngine(const QuadOptions& o, const char* name, const char* format) : name_(name), pipeline_(o, name, format) {}
+  QuadEngine(const QuadOptions& o, const char* name, const char* format)
+      : name_(name), format_(format), options_(o), pipeline_(o, name, format) {}
   const char* name() const override { return name_; }
   void check_raster(int raster) const override { pipeline_.check_raster(raster); }
 
@@ -193,9 +222,31 @@ class QuadEngine : public RasterEngine {
   EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame); }
   void check_split_frame(const ScreenFrame& frame) const override { pipeline_.check_frame(frame); }
 
+  // Each part on its own pipeline and worker thread, then the merge of their samples.
+  EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts) override {
+    for (const ScreenFrame* part : parts) pipeline_.check_frame(*part);
+    EngineRun run;
+    run.report = {{"engine", name_},
+                  {"format", format_},
+                  {"architecture", options_.arch},
+                  {"samples_per_pixel", 1 << (2 * options_.side_log2)}};
+    rasterise_parts(
+        parts_, parts, [&] { return std::make_unique<QuadPipeline<P>>(options_, name_, format_); }, run.report);
+    std::vector<const quad::PixelFrame<P>*> frames;
+    for (std::size_t k = 0; k < parts.size(); ++k) frames.push_back(&parts_[k]->pixels());
+    const auto t0 = Clock::now();
+    quad::PixelMerge<P>(frames, part_offsets(parts)).run(int(parts.size()), run.out);
+    run.report["merge_ms"] = ms_since(t0);
+    return run;
+  }
+  bool renders_parts() const override { return true; }
+
  private:
   const char* name_;
+  const char* format_;
+  QuadOptions options_;
   QuadPipeline<P> pipeline_;
+  std::vector<std::unique_ptr<QuadPipeline<P>>> parts_;  // --pipelines: one per part
 };
 
 }  // namespace

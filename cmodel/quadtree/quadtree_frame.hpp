@@ -148,6 +148,10 @@ class PixelFrame final : public PixelSink<P> {
  public:
   PixelFrame() : tables_(std::make_unique<hls::QuadPixelTables<P>>()) {}
 
+  // Keep every taken sample's colour and arrival rank (the merge of rendering pipelines reads them,
+  // quadtree/pixel_merge.hpp); off by default: the pixel state's sums are all the resolve needs.
+  void keep_samples(bool on) { keep_samples_ = on; }
+
   // Loads the tables and the light covers of a frame and clears the pixel states.
   void begin(const ScreenFrame& frame, int raster_log2, int side_log2 = hls::kDefaultSideLog2) {
     n_ = 1 << raster_log2;
@@ -164,6 +168,8 @@ class PixelFrame final : public PixelSink<P> {
     owners_.assign(pixels * std::size_t(spp_), -1);
     cover_index_.assign(pixels, -1);
     covers_.clear();
+    sample_colour_.assign(keep_samples_ ? pixels * std::size_t(spp_) : 0, {});
+    sample_rank_.assign(keep_samples_ ? pixels * std::size_t(spp_) : 0, 0);
     light_samples_ = rasterise_lights(frame);
     samples_written_ = 0;
   }
@@ -178,8 +184,28 @@ class PixelFrame final : public PixelSink<P> {
     samples_written_ += __builtin_popcountll(f);
     for (int s = 0; s < spp_; ++s)
       if ((f >> s) & 1u) owners_[pix * std::size_t(spp_) + std::size_t(s)] = std::int32_t(it.w.poly.id.value());
+    if (keep_samples_) keep_taken(it.w, pix, f);
     return f;
   }
+
+  // What the merge of rendering pipelines reads (keep_samples on): per pixel the samples polygons
+  // own and their light cover, per sample its owner, colour and arrival rank.
+  std::uint64_t owned(std::size_t pix) const { return states_[pix].owned.value(); }
+  std::int32_t owner(std::size_t pix, int s) const { return owners_[pix * std::size_t(spp_) + std::size_t(s)]; }
+  const hls::QuadLightCover<P>& cover(std::size_t pix) const {
+    const int ci = cover_index_[pix];
+    return ci >= 0 ? covers_[std::size_t(ci)] : no_cover_;
+  }
+  struct TakenSample {
+    typename P::Sample colour[3];
+  };
+  const TakenSample& taken(std::size_t pix, int s) const {
+    return sample_colour_[pix * std::size_t(spp_) + std::size_t(s)];
+  }
+  std::uint64_t rank(std::size_t pix, int s) const { return sample_rank_[pix * std::size_t(spp_) + std::size_t(s)]; }
+  int raster() const { return n_; }
+  int side_log2() const { return side_log2_; }
+  int samples_per_pixel() const { return spp_; }
 
   // The resolved image and the per-pixel ids (majority owner).
   void resolve(Image& image, IdBuffer& ids) const {
@@ -208,9 +234,15 @@ class PixelFrame final : public PixelSink<P> {
   long long samples_written() const { return samples_written_; }
 
  private:
-  const hls::QuadLightCover<P>& cover(std::size_t pix) const {
-    const int ci = cover_index_[pix];
-    return ci >= 0 ? covers_[std::size_t(ci)] : no_cover_;
+  // The colours of the samples a record took (the pixel processor's own per-sample function) and
+  // their arrival order.
+  void keep_taken(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t taken) {
+    for (int s = 0; s < spp_; ++s) {
+      if (((taken >> s) & 1u) == 0) continue;
+      const std::size_t k = pix * std::size_t(spp_) + std::size_t(s);
+      hls::quad_sample_colour(w, s, *tables_, cover(pix), sample_colour_[k].colour, side_log2_);
+      sample_rank_[k] = next_rank_++;
+    }
   }
 
   // The light point unit: every light's samples (the coding table's chords, hls/pixel/light_coding.hpp:
@@ -267,6 +299,10 @@ class PixelFrame final : public PixelSink<P> {
   // A member rather than a function-local static: clang 14's ASan build once aborted (free():
   // invalid pointer) compiling the static's guarded initialisation of this large aggregate.
   hls::QuadLightCover<P> no_cover_{};
+  bool keep_samples_ = false;
+  std::vector<TakenSample> sample_colour_;
+  std::vector<std::uint64_t> sample_rank_;
+  std::uint64_t next_rank_ = 0;
   long light_samples_ = 0;
   long long samples_written_ = 0;  // samples polygons took (the pixel processor's work)
 };

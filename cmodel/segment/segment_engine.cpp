@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/timing.hpp"
+#include "engine/rendering_parts.hpp"
 #include "formatter/fog_table.hpp"
 #include "formatter/formatter_twin.hpp"
 #include "formatter/lattice_check.hpp"
@@ -182,6 +184,64 @@ class SegmentPipeline {
     return run;
   }
 
+  // One rendering pipeline's part (seed 000's Nc): formatter, edge and segment generators into its
+  // own frame and segment memories, and its video tables; the video stage (merge_parts) reads it.
+  nlohmann::ordered_json rasterise_part(const ScreenFrame& part) {
+    const auto t0 = Clock::now();
+    const int log2 = check_frame(part, side_log2_);
+    FrameStats st;
+    format_and_count(part, log2, st);
+    generate_and_sort(part, log2, st);
+    load_video_tables(part);
+    return {{"polygons", part.polygons.size()},
+            {"light_points", part.light_points.size()},
+            {"segments", st.polygon_segments + st.light_segments},
+            {"polygons_dropped", st.dropped_overload},
+            {"frame_memory_overflowed", frame_memory_->polygons_overflowed.value()},
+            {"segments_lost", segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value()},
+            {"ms", ms_since(t0)}};
+  }
+
+  // The video stage of N pipelines, line by line (lines shared among `threads` workers): each
+  // line's segments drawn from every part's segment memory in part order, so that a sample keeps
+  // the first part's colour (the same visibility by priority as one list); the samples' polygons
+  // renumbered into the whole list (offsets[k]: the polygons before part k). Returns the segments read.
+  static long merge_parts(const std::vector<SegmentPipeline*>& parts, const std::vector<std::int32_t>& offsets, int n,
+                          int threads, RasterImage& out) {
+    const int side_log2 = parts[0]->side_log2_;
+    const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(hls::raster_log2_of(n), side_log2);
+    const int cols = g.rows(), side = g.side();
+    out.image = Image(n, n);
+    out.ids = IdBuffer(n, n);
+    struct Worker {
+      std::unique_ptr<hls::LineBuffer<P>> line = std::make_unique<hls::LineBuffer<P>>();
+      std::unique_ptr<hls::PixelLine> pixels = std::make_unique<hls::PixelLine>();
+      std::vector<char> renumbered;
+      long read = 0;
+    };
+    std::vector<Worker> workers(std::size_t(std::max(1, threads)));
+    parallel_for(std::size_t(n), threads, [&](std::size_t line, int self) {
+      Worker& w = workers[std::size_t(self)];
+      hls::clear_line_buffer(g, cols, *w.line);
+      w.renumbered.assign(std::size_t(side * cols), 0);
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        w.read += hls::draw_line(int(line), g, cols, *parts[k]->segment_memory_, *parts[k]->tables_, *w.line);
+        for (int r = 0; r < side; ++r)
+          for (int i = 0; i < cols; ++i) {
+            int& polygon = w.line->polygon[r][i];
+            char& done = w.renumbered[std::size_t(r * cols + i)];
+            if (polygon >= 0 && !done) polygon += offsets[k];
+            done = polygon >= 0;
+          }
+      }
+      for (int px = 0; px < n; ++px) hls::resolve_pixel(px, g, *parts[0]->tables_, *w.line, *w.pixels);
+      store_line(int(line), n, *w.pixels, out);
+    });
+    long read = 0;
+    for (const Worker& w : workers) read += w.read;
+    return read;
+  }
+
  private:
   using F = Front<P>;
 
@@ -289,9 +349,8 @@ class SegmentPipeline {
     emit_lights_before(long(frame.polygons.size()));
   }
 
-  // Video channel, line by line.
-  void video(const ScreenFrame& frame, int log2, RasterImage& out, FrameStats& st) {
-    const int n = frame.raster;
+  // The video channel's tables for a frame (fog, fog colour, background, interpolation mode).
+  void load_video_tables(const ScreenFrame& frame) {
     F::fog_table(tables_->fog, frame.fog);
     F::fog_inverse_table(tables_->fog_inverse, frame.fog);
     tables_->plane_mode = !seed_interpolation_;
@@ -299,17 +358,27 @@ class SegmentPipeline {
       tables_->fog_colour[c] = F::level(frame.fog.colour[c]);
       tables_->background[c] = F::level(frame.background[c]);
     }
+  }
+
+  // Video channel, line by line.
+  void video(const ScreenFrame& frame, int log2, RasterImage& out, FrameStats& st) {
+    const int n = frame.raster;
+    load_video_tables(frame);
     out.image = Image(n, n);
     out.ids = IdBuffer(n, n);
     hls::PixelLine pixels;
     for (int line = 0; line < n; ++line) {
       st.read += hls::render_line(line, log2, *segment_memory_, *tables_, *line_, pixels, side_log2_);
       st.max_per_line = std::max<long>(st.max_per_line, long(segment_memory_->count[line].value()));
-      for (int px = 0; px < n; ++px) {
-        std::uint8_t* dst = out.image.at(px, line);
-        for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(pixels.rgb[px][c].value());
-        out.ids.id[std::size_t(line) * std::size_t(n) + std::size_t(px)] = pixels.id[px];
-      }
+      store_line(line, n, pixels, out);
+    }
+  }
+
+  static void store_line(int line, int n, const hls::PixelLine& pixels, RasterImage& out) {
+    for (int px = 0; px < n; ++px) {
+      std::uint8_t* dst = out.image.at(px, line);
+      for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(pixels.rgb[px][c].value());
+      out.ids.id[std::size_t(line) * std::size_t(n) + std::size_t(px)] = pixels.id[px];
     }
   }
 
@@ -382,7 +451,12 @@ template <class P>
 class SegmentEngine : public RasterEngine {
  public:
   SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp, int side_log2)
-      : name_(name), format_(format), side_log2_(side_log2), pipeline_(quad, seed_interp, side_log2) {}
+      : name_(name),
+        format_(format),
+        side_log2_(side_log2),
+        quad_(quad),
+        interp_(seed_interp),
+        pipeline_(quad, seed_interp, side_log2) {}
   const char* name() const override { return name_; }
   void check_raster(int raster) const override {
     ScreenFrame f;
@@ -392,6 +466,23 @@ class SegmentEngine : public RasterEngine {
 
  protected:
   EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
+
+  // Each part on its own pipeline and worker thread, then the merged video stage.
+  EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts) override {
+    for (const ScreenFrame* part : parts) SegmentPipeline<P>::check_frame(*part, side_log2_);
+    EngineRun run;
+    run.report = {{"engine", name_}, {"format", format_}, {"samples_per_pixel", 1 << (2 * side_log2_)}};
+    rasterise_parts(
+        parts_, parts, [&] { return std::make_unique<SegmentPipeline<P>>(quad_, interp_, side_log2_); }, run.report);
+    std::vector<SegmentPipeline<P>*> pipes;
+    for (std::size_t k = 0; k < parts.size(); ++k) pipes.push_back(parts_[k].get());
+    const auto t0 = Clock::now();
+    run.report["segments_read_by_video"] =
+        SegmentPipeline<P>::merge_parts(pipes, part_offsets(parts), parts[0]->raster, int(parts.size()), run.out);
+    run.report["video_ms"] = ms_since(t0);
+    return run;
+  }
+  bool renders_parts() const override { return true; }
   void check_split_frame(const ScreenFrame& frame) const override {
     SegmentPipeline<P>::check_frame(frame, side_log2_);
   }
@@ -400,7 +491,9 @@ class SegmentEngine : public RasterEngine {
   const char* name_;
   const char* format_;
   int side_log2_;
+  bool quad_, interp_;
   SegmentPipeline<P> pipeline_;
+  std::vector<std::unique_ptr<SegmentPipeline<P>>> parts_;  // --pipelines: one per part
 };
 
 }  // namespace

@@ -49,6 +49,27 @@ void quad_pixel_clear(QuadPixelState<P>& st) {
   for (int c = 0; c < 3; ++c) st.sum[c] = typename P::Accum();
 }
 
+// The colour of sample s (bit S dj + di) of a pixel record when this polygon takes it: the
+// light's, when a light covers the sample from a priority position at or before the polygon's,
+// else colour x I, fog by 1/Z at the sample.
+template <class P>
+void quad_sample_colour(const QuadWindow<P>& px, int s, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
+                        typename P::Sample (&colour)[3], int side_log2 = kDefaultSideLog2) {
+  const QuadPolygon<P>& poly = px.poly;
+  const int di = s & ((1 << side_log2) - 1), dj = s >> side_log2;
+  if (lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value()) {
+    for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
+    return;
+  }
+  const typename P::Param vi =
+      P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
+  const typename P::Param vw =
+      P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth], poly.dp_dj[kParamInverseDepth], di, dj);
+  const typename P::Intensity in = P::intensity(vi);
+  const typename P::FogFactorType f = P::fog_factor(t.fog, vw, poly.w_exponent);
+  for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
+}
+
 // One pixel record (a level-n window and its covered samples, S = 2^side_log2 a side); returns
 // the samples it took.
 template <class P>
@@ -56,25 +77,12 @@ PixelSampleMask quad_pixel_process(const QuadWindow<P>& px, const PixelSampleMas
                                    const QuadLightCover<P>& lights, QuadPixelState<P>& st,
                                    int side_log2 = kDefaultSideLog2) {
   const std::uint64_t fresh = samples.value() & ~st.owned.value();
-  const QuadPolygon<P>& poly = px.poly;
   const int side = 1 << side_log2;
   for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
     if (s >= side * side) break;
     if (((fresh >> s) & 1u) == 0) continue;
-    const int di = s & (side - 1), dj = s >> side_log2;
-    const bool light_shows = lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value();
     typename P::Sample colour[3];
-    if (light_shows) {
-      for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
-    } else {
-      const typename P::Param vi =
-          P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
-      const typename P::Param vw = P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth],
-                                                poly.dp_dj[kParamInverseDepth], di, dj);
-      const typename P::Intensity in = P::intensity(vi);
-      const typename P::FogFactorType f = P::fog_factor(t.fog, vw, poly.w_exponent);
-      for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
-    }
+    quad_sample_colour(px, s, t, lights, colour, side_log2);
     for (int c = 0; c < 3; ++c) st.sum[c] = P::accumulate(st.sum[c], colour[c]);
   }
   st.owned = PixelSampleMask(st.owned.value() | fresh);

@@ -148,13 +148,9 @@ void resolve_pixel(int px, const LatticeGeometry& g, const VideoTables<P>& t, co
   out.id[px] = majority_polygon(ids, side * side);
 }
 
-// Renders raster line `line` of an N = 2^raster_log2 raster with S = 2^side_log2 sample rows per
-// line; returns the segments it read.
-template <class P, int K>
-int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t, LineBuffer<P>& w,
-                PixelLine& out, int side_log2 = kDefaultSideLog2) {
-  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
-  const int n = 1 << raster_log2, cols = g.rows();
+// The line buffer's S sample rows of `cols` samples, cleared (nothing owned, no polygon).
+template <class P>
+void clear_line_buffer(const LatticeGeometry& g, int cols, LineBuffer<P>& w) {
   for (int r = 0; r < kMaxRowsPerLine; ++r) {
     if (r >= g.side()) break;
     for (int i = 0; i < kMaxLatticeSize; ++i) {
@@ -163,6 +159,13 @@ int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const V
       w.polygon[r][i] = -1;
     }
   }
+}
+
+// Draws line `line`'s segments from the segment memory into the line buffer, in priority order
+// (samples already owned keep their colour); returns the segments it read.
+template <class P, int K>
+int draw_line(int line, const LatticeGeometry& g, int cols, const SegmentMemory<P, K>& m, const VideoTables<P>& t,
+              LineBuffer<P>& w) {
   const int b = line & 1;
   int p = m.head[line];
   int read = 0;
@@ -172,6 +175,18 @@ int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const V
     ++read;
     p = m.next[b][p];
   }
+  return read;
+}
+
+// Renders raster line `line` of an N = 2^raster_log2 raster with S = 2^side_log2 sample rows per
+// line; returns the segments it read.
+template <class P, int K>
+int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const VideoTables<P>& t, LineBuffer<P>& w,
+                PixelLine& out, int side_log2 = kDefaultSideLog2) {
+  const LatticeGeometry g = LatticeGeometry::for_raster(raster_log2, side_log2);
+  const int n = 1 << raster_log2, cols = g.rows();
+  clear_line_buffer(g, cols, w);
+  const int read = draw_line(line, g, cols, m, t, w);
   for (int px = 0; px < kMaxLines; ++px) {
     if (px >= n) break;
     resolve_pixel(px, g, t, w, out);

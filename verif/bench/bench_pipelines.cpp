@@ -1,0 +1,45 @@
+// Seed 000's rendering channels: one channel of the airfield (frame 5, channel 0: 3,000 polygons
+// at 512 x 512, 16 samples per pixel) rendered by 1, 2 and 4 pipelines (`--pipelines`): stages A
+// and B, each pipeline's raster engine on its own worker thread, the merging video stage. The
+// speed-up is the 1-pipeline case's time over the N-pipeline case's, in the same run; the images
+// are identical (verif/stress/test_rendering_pipelines.cpp). Counters: polygons per second, the
+// load balance (max / mean polygons per pipeline).
+#include <memory>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "pipeline/scene_pipeline.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace cig {
+namespace {
+
+const char* const kEngines[] = {"segment", "quadtree"};
+
+void channel(benchmark::State& state) {
+  static const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
+  static const ScenePipeline pipeline(scene);
+  const char* engine = kEngines[state.range(0)];
+  const int pipelines = int(state.range(1));
+  double polygons = 0, balance = 1;
+  for (auto _ : state) {
+    const std::vector<ChannelOutput> out = pipeline.render(5, {0}, engine, {}, 1, pipelines);
+    polygons = out[0].report["geometry"]["polygons_out"].get<double>();
+    if (pipelines > 1) balance = out[0].report["pipelines"]["load_balance"].get<double>();
+    benchmark::DoNotOptimize(out[0].out.image.rgb.data());
+  }
+  state.SetLabel(engine);
+  state.counters["polygons/s"] = benchmark::Counter(polygons, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["load_balance"] = balance;
+}
+BENCHMARK(channel)
+    ->ArgNames({"engine", "pipelines"})
+    ->ArgsProduct({{0, 1}, {1, 2, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace cig
+
+BENCHMARK_MAIN();
