@@ -17,6 +17,7 @@ test_packages=(
   assimp-testmodels               # real OBJ models for the loader tests
   verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
   gnuplot-nox                     # `cig sweep --plot`: the run-time / error frontier as a PNG
+  libosmesa6-dev                  # bench_llvmpipe (tools/bench.sh): Mesa's llvmpipe as the benchmark's peer
 )
 case "${1:-all}" in
   render) packages=("${render_packages[@]}") ;;

@@ -6,6 +6,8 @@
 #include <fstream>
 
 #include "hls/formatter/records.hpp"
+#include "hls/segment/frame_memory.hpp"
+#include "hls/segment/overload.hpp"
 
 namespace cig::cli {
 
@@ -66,6 +68,26 @@ bool scene_exceeds_ids(const Scene& scene) {
 
 std::string report_text(const nlohmann::ordered_json& report) {
   return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
+
+std::string drop_warning(const nlohmann::ordered_json& engine_report, const std::string& image) {
+  if (!engine_report.contains("dropped")) return "";
+  const nlohmann::ordered_json& d = engine_report["dropped"];
+  const long overload = d.value("polygons_overload", 0L), frame_full = d.value("polygons_frame_memory_full", 0L),
+             segment_full = d.value("segments_segment_memory_full", 0L);
+  if (overload == 0 && frame_full == 0 && segment_full == 0) return "";
+  std::string text = "cig: warning: " + image + ": the " + engine_report.value("engine", std::string("engine")) +
+                     " engine's memories were full:";
+  if (overload)
+    text += " " + std::to_string(overload) +
+            " polygon(s) dropped by the overload threshold (the segment memory holds " +
+            std::to_string(hls::kSegmentBankWords) + " segments a field);";
+  if (frame_full)
+    text += " " + std::to_string(frame_full) + " polygon(s) did not fit the frame memory (" +
+            std::to_string(hls::kFrameBankWords) + " words a bank);";
+  if (segment_full) text += " " + std::to_string(segment_full) + " segment(s) did not fit the segment memory;";
+  text.back() = '\n';
+  return text;
 }
 
 }  // namespace cig::cli

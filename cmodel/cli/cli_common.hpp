@@ -121,6 +121,12 @@ std::string report_text(const nlohmann::ordered_json& report);
 // (hls::kMaxPolygonIds): only then must the frames go through stages A and B to be checked.
 bool scene_exceeds_ids(const Scene& scene);
 
+// The warning for what an engine's full memories lost in one image (the report's "dropped": the
+// segment processor's overload drops, frame-memory and segment-memory overflows), "" when nothing
+// was lost. `image` names it ("frame 3 channel 1", a file). Never silent: every command that
+// renders prints it on stderr.
+std::string drop_warning(const nlohmann::ordered_json& engine_report, const std::string& image);
+
 // The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.
 inline void frame_range(const std::string& frames_text, int frame_k, bool frame_given, int frame_count,
                         const std::string& scene_file, int& a, int& b) {

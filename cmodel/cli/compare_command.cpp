@@ -68,6 +68,12 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
+        const std::string lost = drop_warning(
+            got.report, "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)));
+        if (!lost.empty()) {
+          std::lock_guard<std::mutex> lock(mutex);
+          std::cerr << lost;
+        }
         if (classify && rows[k].error.sum_squared > 0)
           attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
         if (!c.out_dir.empty())

@@ -29,6 +29,7 @@ int RasterCommand::run() {
   const auto t0 = Clock::now();
   EngineRun run = eng->render(frame);
   run.report["ms"] = ms_since(t0);
+  std::cerr << drop_warning(run.report, polys_file);
   const auto parent = std::filesystem::path(out_file).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent);
   write_png(out_file, run.out.image);

@@ -23,7 +23,10 @@ void RenderCommand::add_to(CLI::App& app) {
   sub->add_option("--channel", channel, "render only this channel")->check(CLI::Range(0, kMaxChannelIndex));
   sub->add_option("--out", out_dir, "output directory (default out)");
   sub->add_option("--report", report_file, "report file (default DIR/report.json)");
-  sub->add_option("--threads", threads, "worker threads over channels (default: cores)")->check(CLI::Range(1, 64));
+  sub->add_option("--threads", threads,
+                  "worker threads: over channels, and those left over split each image into strips where the engine "
+                  "can (segment: the video channel's lines; same bits) (default: cores)")
+      ->check(CLI::Range(1, 64));
   sub->add_option("--pipelines", pipelines,
                   "rendering pipelines per channel (seed 000's Nc): the channel's priority list split into N "
                   "disjoint lists, each rasterised on its own thread, merged by priority (priority engines)")
@@ -150,7 +153,11 @@ int RenderCommand::run() {
     fr["render_ms"] = render_ms;
     fr["output_ms"] = ms_since(t_out);
     fr["channels"] = nlohmann::ordered_json::array();
-    for (auto& co : outs) fr["channels"].push_back(std::move(co.report));
+    for (auto& co : outs) {
+      std::cerr << drop_warning(co.report["raster"],
+                                "frame " + std::to_string(frame) + " channel " + std::to_string(co.channel));
+      fr["channels"].push_back(std::move(co.report));
+    }
     report["frames"].push_back(std::move(fr));
     if (b > a)
       std::cerr << "cig: frame " << frame << " (" << (frame - a + 1) << "/" << (b - a + 1) << ") " << channels.size()

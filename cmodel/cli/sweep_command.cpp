@@ -153,6 +153,8 @@ std::vector<SweepRow> measure(const FrameJobs& jobs, const std::vector<Combinati
       if (got.report.contains("hardware_ms")) rows[v].hardware_ms += got.report["hardware_ms"].get<double>();
       else rows[v].has_hardware = false;
       rows[v].totals.add(compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out));
+      std::cerr << drop_warning(got.report, rows[v].label + ", frame " + std::to_string(jobs.frame(k)) + " channel " +
+                                                std::to_string(jobs.channel(k)));
     }
     if (jobs.size() > 1) std::cerr << "\rcig: sweep image " << k + 1 << "/" << jobs.size() << std::flush;
   }

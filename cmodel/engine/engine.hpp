@@ -5,6 +5,7 @@
 // per-pixel ids, image/raster_image.hpp) and a report.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -15,10 +16,16 @@
 
 namespace cig {
 
+// The float reference's polygons (and light points) per channel: its ids are 32-bit and it keeps
+// every polygon's setup in memory, so the bound only keeps a channel within a few GB. The
+// hardware engines take 65,536 (their 16-bit polygon ids).
+constexpr std::size_t kMaxReferencePolygons = std::size_t{1} << 24;
+
 struct EngineOptions {
   bool snap = false;                          // snap positions to the formatter grid first (float engine)
   bool fan_split = true;                      // split polygons with non-planar attributes (engine/fan_split.hpp)
   std::map<std::string, std::string> params;  // engine-specific settings (--engine-opt KEY=VALUE)
+  int threads = 1;  // workers for one image (strips of lines where the engine splits an image; same bits)
 };
 
 struct EngineRun {

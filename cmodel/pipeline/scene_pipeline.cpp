@@ -101,11 +101,14 @@ std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<in
   std::vector<ChannelOutput> out(channels.size());
   const int n = std::max(1, std::min<int>(threads, int(channels.size())));
   if (int(engines_.size()) < n) engines_.resize(std::size_t(n));
-  std::string key = engine + (options.snap ? " snap" : "");
+  // Threads left over by the channels split each image (strips, where the engine does).
+  EngineOptions per_engine = options;
+  per_engine.threads = std::max(1, threads / n);
+  std::string key = engine + (options.snap ? " snap" : "") + " threads=" + std::to_string(per_engine.threads);
   for (const auto& [k, v] : options.params) key += " " + k + "=" + v;
   for (int i = 0; i < n; ++i) {
     EngineSlot& slot = engines_[std::size_t(i)];
-    if (!slot.engine || slot.name != key) slot = {key, make_engine(engine, options)};
+    if (!slot.engine || slot.name != key) slot = {key, make_engine(engine, per_engine)};
   }
   parallel_for(channels.size(), n, [&](std::size_t k, int self) {
     RasterEngine* eng = engines_[std::size_t(self)].engine.get();

@@ -50,9 +50,12 @@ class QuadPipeline {
     const quad::Architecture arch = check_raster(frame.raster);
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons",
-                       "the quadtree engine takes at most 65536 polygons per channel; frame " +
+                       "the quadtree engine takes at most 65536 polygons per channel (the 16-bit polygon id "
+                       "of its window records, which the pixel processor compares with the light points' "
+                       "priority); frame " +
                            std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
-                           std::to_string(frame.polygons.size()));
+                           std::to_string(frame.polygons.size()) + " (the float engine takes up to " +
+                           std::to_string(kMaxReferencePolygons) + ")");
     return arch;
   }
 

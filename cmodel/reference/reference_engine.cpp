@@ -28,7 +28,16 @@ class FloatEngine : public RasterEngine {
   const char* name() const override { return "float"; }
 
  protected:
+  void check_split_frame(const ScreenFrame& frame) const override {
+    if (frame.polygons.size() > kMaxReferencePolygons || frame.light_points.size() > kMaxReferencePolygons)
+      throw InputError("", "polygons",
+                       "the float engine takes at most " + std::to_string(kMaxReferencePolygons) +
+                           " polygons and as many light points per channel; frame " + std::to_string(frame.frame) +
+                           " channel " + std::to_string(frame.channel) + " has " +
+                           std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()));
+  }
   EngineRun render_frame(const ScreenFrame& frame) override {
+    check_split_frame(frame);
     ReferenceStats st;
     EngineRun run;
     if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_);

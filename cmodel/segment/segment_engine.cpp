@@ -161,9 +161,12 @@ class SegmentPipeline {
     if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) ||
         frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons",
-                       "the segment engine takes at most 65536 polygons and 65536 light points per channel; frame " +
+                       "the segment engine takes at most 65536 polygons and 65536 light points per channel (the "
+                       "16-bit polygon id of its frame-memory and segment records, and the video channel's colour "
+                       "and plane tables of 65536 entries); frame " +
                            std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
-                           std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()));
+                           std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()) +
+                           " (the float engine takes up to " + std::to_string(kMaxReferencePolygons) + ")");
     return log2;
   }
 
@@ -184,6 +187,19 @@ class SegmentPipeline {
     return run;
   }
 
+  // What the frame lost to full memories (SPEC D, the seed's overload behaviour; the CLI warns,
+  // cli_common.hpp drop_warning): polygons the overload threshold dropped, polygons the frame
+  // memory had no room for, segments the segment memory had no room for.
+  nlohmann::ordered_json dropped(long dropped_overload) const {
+    return {
+        {"polygons_overload", dropped_overload},
+        {"polygons_frame_memory_full", frame_memory_->polygons_overflowed.value()},
+        {"segments_segment_memory_full", segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value()}};
+  }
+
+  // Workers for the video channel's lines (EngineOptions::threads): the same bits.
+  void set_threads(int threads) { threads_ = std::max(1, threads); }
+
   // One rendering pipeline's part (seed 000's Nc): formatter, edge and segment generators into its
   // own frame and segment memories, and its video tables; the video stage (merge_parts) reads it.
   nlohmann::ordered_json rasterise_part(const ScreenFrame& part) {
@@ -196,9 +212,7 @@ class SegmentPipeline {
     return {{"polygons", part.polygons.size()},
             {"light_points", part.light_points.size()},
             {"segments", st.polygon_segments + st.light_segments},
-            {"polygons_dropped", st.dropped_overload},
-            {"frame_memory_overflowed", frame_memory_->polygons_overflowed.value()},
-            {"segments_lost", segment_memory_->dropped[0].value() + segment_memory_->dropped[1].value()},
+            {"dropped", dropped(st.dropped_overload)},
             {"ms", ms_since(t0)}};
   }
 
@@ -364,6 +378,12 @@ class SegmentPipeline {
   void video(const ScreenFrame& frame, int log2, RasterImage& out, FrameStats& st) {
     const int n = frame.raster;
     load_video_tables(frame);
+    if (threads_ > 1) {  // lines shared among the workers, each with its own line buffer
+      st.read = merge_parts({this}, {0}, n, threads_, out);
+      for (int line = 0; line < n; ++line)
+        st.max_per_line = std::max<long>(st.max_per_line, long(segment_memory_->count[line].value()));
+      return;
+    }
     out.image = Image(n, n);
     out.ids = IdBuffer(n, n);
     hls::PixelLine pixels;
@@ -423,6 +443,7 @@ class SegmentPipeline {
                        {"per_line_mean", n ? double(stored) / n : 0.0},
                        {"read_by_video", st.read}};
     rep["light_points"] = frame.light_points.size();
+    rep["dropped"] = dropped(st.dropped_overload);
     // Seed timings: edge formation <= 10 us per edge, 400 ns per segment written, 200 ns read.
     const double est_ms = (st.edges_stored * kEdgeFormationUs + stored * kSegmentWriteNs * 1e-3) * 1e-3;
     rep["hardware_ms"] = est_ms;  // the modelled hardware time of the frame (cig sweep)
@@ -445,18 +466,21 @@ class SegmentPipeline {
   bool seed_quadrilateral_ = false;
   bool seed_interpolation_ = false;
   int side_log2_ = hls::kDefaultSideLog2;
+  int threads_ = 1;
 };
 
 template <class P>
 class SegmentEngine : public RasterEngine {
  public:
-  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp, int side_log2)
+  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp, int side_log2, int threads)
       : name_(name),
         format_(format),
         side_log2_(side_log2),
         quad_(quad),
         interp_(seed_interp),
-        pipeline_(quad, seed_interp, side_log2) {}
+        pipeline_(quad, seed_interp, side_log2) {
+    pipeline_.set_threads(threads);
+  }
   const char* name() const override { return name_; }
   void check_raster(int raster) const override {
     ScreenFrame f;
@@ -480,6 +504,11 @@ class SegmentEngine : public RasterEngine {
     run.report["segments_read_by_video"] =
         SegmentPipeline<P>::merge_parts(pipes, part_offsets(parts), parts[0]->raster, int(parts.size()), run.out);
     run.report["video_ms"] = ms_since(t0);
+    nlohmann::ordered_json total = nlohmann::ordered_json::object();
+    for (const auto& part : run.report["pipelines"])
+      for (const auto& item : part["dropped"].items())
+        total[item.key()] = total.value(item.key(), 0L) + item.value().template get<long>();
+    run.report["dropped"] = total;
     return run;
   }
   bool renders_parts() const override { return true; }
@@ -528,16 +557,18 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
                            (twin ? "' (known: x-rows, interp, spp)" : "' (known: format, x-rows, interp, spp)"));
     }
   }
-  if (twin) return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp, side_log2);
+  if (twin)
+    return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp, side_log2,
+                                                               options.threads);
   if (format == "coarse")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(
-        engine, hls::SegmentFormatCoarse::name, quad, seed_interp, side_log2);
+        engine, hls::SegmentFormatCoarse::name, quad, seed_interp, side_log2, options.threads);
   if (format == "medium")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(
-        engine, hls::SegmentFormatMedium::name, quad, seed_interp, side_log2);
+        engine, hls::SegmentFormatMedium::name, quad, seed_interp, side_log2, options.threads);
   if (format == "fine")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
-        engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2);
+        engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2, options.threads);
   throw InputError("", "--engine-opt", "format '" + format + "' is not one of coarse, medium, fine");
 }
 

@@ -1,6 +1,6 @@
-// What the Google Benchmark programs share (bench_segment, bench_quadtree, verif/cosim/bench_rtl):
-// their inputs, built on first use so that a filtered run loads only what it needs, the
-// registration of a millisecond, wall-time case, and main().
+// What the Google Benchmark programs share (bench_segment, bench_quadtree, bench_llvmpipe,
+// verif/cosim/bench_rtl): their inputs, built on first use so that a filtered run loads only what
+// it needs, the registration of a millisecond, wall-time case, and main().
 #pragma once
 
 #include <benchmark/benchmark.h>
@@ -16,14 +16,19 @@ namespace cig::bench {
 
 inline std::string source_path(const std::string& relative) { return std::string(CIG_SOURCE_DIR) + "/" + relative; }
 
-// The centre channel of frame 0 of scenes/airfield.json (stages A and B run once, not timed).
+inline const Scene& airfield_scene() {
+  static const Scene scene = load_scene(source_path("scenes/airfield.json"));
+  return scene;
+}
+// One channel of one frame of scenes/airfield.json (stages A and B, run by the caller once: not timed).
+inline ScreenFrame airfield_frame(int frame, int channel) {
+  const ScenePipeline pipeline(airfield_scene());
+  nlohmann::ordered_json unused;
+  return pipeline.geometry(frame, channel, unused);
+}
+// The centre channel of frame 0.
 inline const ScreenFrame& airfield_frame() {
-  static const ScreenFrame frame = [] {
-    static const Scene scene = load_scene(source_path("scenes/airfield.json"));
-    const ScenePipeline pipeline(scene);
-    nlohmann::ordered_json unused;
-    return pipeline.geometry(0, 1, unused);
-  }();
+  static const ScreenFrame frame = airfield_frame(0, 1);
   return frame;
 }
 inline const ScreenFrame& depth10_frame() {

@@ -3,7 +3,7 @@
 // and B, each pipeline's raster engine on its own worker thread, the merging video stage. The
 // speed-up is the 1-pipeline case's time over the N-pipeline case's, in the same run; the images
 // are identical (verif/stress/test_rendering_pipelines.cpp). Counters: polygons per second, the
-// load balance (max / mean polygons per pipeline).
+// load balance (max / mean polygons per pipeline). Also one image on 1 and 2 threads (strips).
 #include <memory>
 #include <string>
 
@@ -36,6 +36,24 @@ void channel(benchmark::State& state) {
 BENCHMARK(channel)
     ->ArgNames({"engine", "pipelines"})
     ->ArgsProduct({{0, 1}, {1, 2, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// One image on 1 or 2 threads (`render --threads N` with one channel: the engine splits the image
+// into strips where it can; the segment processor's video channel shares its lines; same bits).
+void strips(benchmark::State& state) {
+  static const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
+  static const ScenePipeline pipeline(scene);
+  const char* engine = kEngines[state.range(0)];
+  for (auto _ : state) {
+    const std::vector<ChannelOutput> out = pipeline.render(5, {0}, engine, {}, int(state.range(1)), 1);
+    benchmark::DoNotOptimize(out[0].out.image.rgb.data());
+  }
+  state.SetLabel(engine);
+}
+BENCHMARK(strips)
+    ->ArgNames({"engine", "threads"})
+    ->ArgsProduct({{0}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

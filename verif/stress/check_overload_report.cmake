@@ -6,6 +6,7 @@
 #   * polygons are dropped only with codes above T, some are, and none with code 0;
 #   * what is kept is stored: banks within 48K, nothing lost to a full bank, and the stored
 #     segments equal the kept codes' counts.
+#   * the drops are never silent: the report's "dropped" and a warning on stderr count them.
 # The scene's vertex intensities are random (not planar): with the fan split its 1,711 polygons
 # become triangles whose extra edges overflow the frame memory, a different test; the scene is
 # sized for the segment memory, so it runs with --fan-split off.
@@ -83,3 +84,10 @@ math(EXPR generated "${polygon_segments} + ${light_segments}")
 math(EXPR stored "${stored_even} + ${stored_odd}")
 expect("generated segments are stored" generated EQUAL stored)
 message(STATUS "ok: threshold ${threshold}, ${dropped} polygons dropped, stored ${stored_even} + ${stored_odd} of ${all}")
+
+# Never silent: the drops are in the report's "dropped" and in a warning on stderr that counts them.
+get_field(dropped_report dropped polygons_overload)
+get_field(dropped_count overload polygons_dropped)
+expect("dropped.polygons_overload equals overload.polygons_dropped" dropped_report EQUAL dropped_count)
+string(FIND "${err}" "warning: ${POLYS}: the segment engine's memories were full: ${dropped_count} polygon(s) dropped by the overload threshold" warned)
+expect("stderr warns of the ${dropped_count} dropped polygons (stderr: ${err})" NOT warned EQUAL -1)

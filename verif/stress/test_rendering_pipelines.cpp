@@ -5,7 +5,8 @@
 //  * manager level: the pipelines' lists are the channel's priority list cut in order (every run
 //    once, each object's light points once), the cuts lie where the loading rule puts them, and
 //    `--pipelines 2, 4` render the airfield exactly as one pipeline does;
-//  * an engine that does not resolve visibility by priority refuses (InputError).
+//  * an engine that does not resolve visibility by priority refuses (InputError);
+//  * one image split into strips on several threads gives the same bits.
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -160,6 +161,22 @@ TEST(RenderingPipelines, AirfieldRendersAsOnePipeline) {
         }
       }
     }
+}
+
+// One image on 2 or 3 threads (render --threads with one channel): strips of the segment
+// processor's video channel, the same bits as one thread.
+TEST(RenderingPipelines, StripsGiveTheSameImage) {
+  const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
+  const ScenePipeline pipeline(scene);
+  for (const char* engine : {"segment", "segment-double"}) {
+    const std::vector<ChannelOutput> one = pipeline.render(3, {1}, engine, {}, 1);
+    for (int threads : {2, 3}) {
+      const std::vector<ChannelOutput> many = pipeline.render(3, {1}, engine, {}, threads);
+      EXPECT_TRUE(one[0].out.image.rgb == many[0].out.image.rgb) << engine << " threads " << threads;
+      EXPECT_TRUE(one[0].out.ids.id == many[0].out.ids.id) << engine << " threads " << threads;
+      EXPECT_EQ(one[0].report["raster"]["segments"], many[0].report["raster"]["segments"]);
+    }
+  }
 }
 
 }  // namespace

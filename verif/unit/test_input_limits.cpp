@@ -12,6 +12,7 @@
 #include "common/json_reader.hpp"
 #include "frame/input_kind.hpp"
 #include "frame/screen_frame.hpp"
+#include "registry/engine_registry.hpp"
 #include "scene/obj_loader.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
@@ -120,6 +121,43 @@ TEST(InputLimits, InputKindComesFromTheFormatField) {
   EXPECT_EQ(input_kind(R"({"format": "cig-polys", "name": "cig-scene"})", "p.json"), InputKind::kPolygonList);
   EXPECT_THROW(input_kind(R"({"format": "cig-image"})", "x.json"), InputError);
   EXPECT_THROW(input_kind(R"(["cig-polys"])", "x.json"), InputError);
+}
+
+}  // namespace
+}  // namespace cig
+
+namespace cig {
+namespace {
+
+// The float reference takes a million polygons in one channel (issue 14): 1,048,576 triangles on
+// a 256 x 256 raster, one per sample cell (4 x 4 per pixel), each covering its own cell's sample
+// (legs of 1.5 cells: the sample at (0.5, 0.5) lies inside, its neighbours' at (1.5, 0.5) outside);
+// every pixel's id is one of its own sixteen triangles.
+TEST(InputLimits, FloatEngineTakesAMillionPolygons) {
+  ScreenFrame f;
+  f.raster = 256;
+  const int per_side = 1024;  // 1024 x 1024 triangles, 4 x 4 per pixel
+  f.polygons.reserve(std::size_t(per_side) * per_side);
+  for (int j = 0; j < per_side; ++j)
+    for (int i = 0; i < per_side; ++i) {
+      ScreenPolygon p;
+      const double x = -1 + 2.0 * i / per_side, y = -1 + 2.0 * j / per_side, d = 1.5 * 2.0 / per_side;
+      p.vertices = {{x, y, 10, 1}, {x + d, y, 10, 1}, {x, y + d, 10, 1}};
+      f.polygons.push_back(std::move(p));
+    }
+  ASSERT_EQ(f.polygons.size(), std::size_t(1) << 20);
+  const auto engine = make_engine("float", {});
+  engine->check_frame(f);
+  const EngineRun run = engine->render(f);
+  EXPECT_EQ(run.report["polygons"].get<std::size_t>(), f.polygons.size());
+  for (int py = 0; py < 256; py += 51)
+    for (int px = 0; px < 256; px += 37) {
+      const std::int32_t id = run.out.ids.id[std::size_t(py) * 256 + std::size_t(px)];
+      EXPECT_GE(id / per_side, 4 * py) << px << "," << py;
+      EXPECT_LT(id / per_side, 4 * py + 4) << px << "," << py;
+      EXPECT_GE(id % per_side, 4 * px) << px << "," << py;
+      EXPECT_LT(id % per_side, 4 * px + 4) << px << "," << py;
+    }
 }
 
 }  // namespace
