@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "common/parallel.hpp"
@@ -26,8 +27,8 @@ template <class P>
 class PixelMerge {
  public:
   // offsets[k]: the polygons before part k in the whole list.
-  PixelMerge(const std::vector<const PixelFrame<P>*>& parts, const std::vector<std::int32_t>& offsets)
-      : parts_(parts), offsets_(offsets), spp_(parts[0]->samples_per_pixel()) {}
+  PixelMerge(std::vector<const PixelFrame<P>*> parts, std::vector<std::int32_t> offsets)
+      : parts_(std::move(parts)), offsets_(std::move(offsets)), spp_(parts_[0]->samples_per_pixel()) {}
 
   void run(int threads, RasterImage& out) const {
     const int n = parts_[0]->raster();
@@ -98,8 +99,8 @@ class PixelMerge {
     return P::level_sample(parts_[0]->tables().background[c]);
   }
 
-  const std::vector<const PixelFrame<P>*>& parts_;
-  const std::vector<std::int32_t>& offsets_;
+  std::vector<const PixelFrame<P>*> parts_;
+  std::vector<std::int32_t> offsets_;
   int spp_;
 };
 

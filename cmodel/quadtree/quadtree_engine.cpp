@@ -62,10 +62,7 @@ class QuadPipeline {
   EngineRun render(const ScreenFrame& frame) {
     const quad::Architecture arch = check_frame(frame);
     const int log2 = arch.raster_log2;
-    quad::ArchConfig cfg;
-    cfg.fifo_depth = options_.fifo;
-    cfg.masks = options_.masks;
-    cfg.side_log2 = options_.side_log2;
+    const quad::ArchConfig cfg = arch_config();
     EngineRun run;
     auto& rep = run.report;
     rep["engine"] = name_;
@@ -111,10 +108,7 @@ class QuadPipeline {
   nlohmann::ordered_json rasterise_part(const ScreenFrame& part) {
     const auto t0 = Clock::now();
     const quad::Architecture arch = check_frame(part);
-    quad::ArchConfig cfg;
-    cfg.fifo_depth = options_.fifo;
-    cfg.masks = options_.masks;
-    cfg.side_log2 = options_.side_log2;
+    const quad::ArchConfig cfg = arch_config();
     quad::FrontEndStats fe;
     const std::vector<hls::QuadWindow<P>> roots = quad::front_end<P>(part, arch.raster_log2, fe, options_.side_log2);
     pixels_.keep_samples(true);
@@ -133,6 +127,15 @@ class QuadPipeline {
   const quad::PixelFrame<P>& pixels() const { return pixels_; }
 
  private:
+  // The cycle model's settings from the engine's options.
+  quad::ArchConfig arch_config() const {
+    quad::ArchConfig cfg;
+    cfg.fifo_depth = options_.fifo;
+    cfg.masks = options_.masks;
+    cfg.side_log2 = options_.side_log2;
+    return cfg;
+  }
+
   // What the frame did: the front end, the PEs level by level, the masks, the cycles per stage.
   void report(const ScreenFrame& frame, const quad::Architecture& arch, const quad::ArchModel<P>& model,
               const quad::FrontEndStats& fe, std::size_t pieces, const quad::ArchStats& st,
