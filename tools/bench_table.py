@@ -6,7 +6,8 @@
 Cases are named LIST/RENDERER (Google Benchmark appends /process_time/real_time); a case's time
 is the median CPU time of its repetitions; a case that failed (an engine refusing the list) shows
 its error. Tables: the CPU-time ratio engine / llvmpipe per list, the CPU times themselves, and
-each image's PSNR against the float engine with the polygons the segment engine dropped."""
+each image's PSNR against the float engine with the polygons the segment engine dropped, and
+for the cases ENGINE@2 (two workers) the wall-time speed-up over the same engine on one."""
 import argparse
 import json
 import math
@@ -19,7 +20,8 @@ COUNTERS = ("psnr_vs_float", "pixels_off", "polygons", "lights", "dropped")
 
 
 def load_cases(path):
-    """The context, the lists, {(list, renderer): {"ms": median CPU ms, "counters": {...}, "error": text}}."""
+    """The context, the lists, {(list, renderer): {"ms": median CPU ms, "wall_ms": median wall ms,
+    "counters": {...}, "error": text}}."""
     with open(path) as f:
         doc = json.load(f)
     cases, lists = {}, []
@@ -29,14 +31,16 @@ def load_cases(path):
         name, renderer = b["run_name"].split("/")[:2]
         if name not in lists:
             lists.append(name)
-        case = cases.setdefault((name, renderer), {"times": [], "counters": {}})
+        case = cases.setdefault((name, renderer), {"times": [], "wall": [], "counters": {}})
         if b.get("error_occurred"):
             case["error"] = b.get("error_message", "error")
             continue
         case["times"].append(b["cpu_time"] * TO_MS[b["time_unit"]])
+        case["wall"].append(b["real_time"] * TO_MS[b["time_unit"]])
         case["counters"] = {k: b[k] for k in COUNTERS if k in b}
     for case in cases.values():
         case["ms"] = statistics.median(case["times"]) if case["times"] else None
+        case["wall_ms"] = statistics.median(case["wall"]) if case["wall"] else None
     return doc.get("context", {}), sorted(lists, key=natural_key), cases  # random interleaving mixes them
 
 
@@ -83,6 +87,21 @@ def time_rows(lists, cases):
     return rows
 
 
+def speedup_rows(lists, cases, threads):
+    """Lists with ENGINE@threads cases: the engine's one-worker wall time over its multi-worker one."""
+    rows = []
+    for name in lists:
+        if not any((name, "%s@%d" % (e, threads)) in cases for e in ENGINES):
+            continue
+        row = [name]
+        for e in ENGINES:
+            one = cases.get((name, e), {}).get("wall_ms")
+            many = cases.get((name, "%s@%d" % (e, threads)), {}).get("wall_ms")
+            row.append("%.2f" % (one / many) if one and many else "-")
+        rows.append(row)
+    return rows
+
+
 def psnr_rows(lists, cases):
     rows, lowest = [], {}
     for name in lists:
@@ -122,6 +141,11 @@ def main():
     print(table(["list", "polygons", "lights", "llvmpipe ms"] + ENGINES, ratio_rows(lists, cases)) + "\n")
     print("## CPU time per frame (ms)\n")
     print(table(["list"] + ENGINES + ["llvmpipe"], time_rows(lists, cases)) + "\n")
+    speedups = speedup_rows(lists, cases, 2)
+    if speedups:
+        print("## Two workers (`threads = 2`): wall time on one worker over wall time on two\n")
+        print("Same bits on both (tested in verif/stress); the machine's two cores are both used.\n")
+        print(table(["list"] + ENGINES, speedups) + "\n")
     print("## Image check: PSNR against the float engine (dB)\n")
     print("Polygons the segment engine dropped (overload protection, full frame memory) are noted.\n")
     print(table(["list"] + ENGINES[1:] + ["llvmpipe"], psnr_rows(lists, cases)))

@@ -8,6 +8,9 @@
 // and quadtree engines trust) agrees with depth (which the float reference and llvmpipe use).
 // Time: CPU time of the whole process (MeasureProcessCPUTime), so that a helper thread Mesa might
 // start is charged too; LP_NUM_THREADS=0 keeps llvmpipe's rasteriser on the calling thread.
+// Threads (deliverable 3): on a few lists each engine also renders with EngineOptions::threads = 2,
+// case `<list>/<engine>@2`; tools/bench_table.py reports the wall-time speed-up over the same
+// engine's one-thread case of the same run (both cases measure wall time too).
 // Counters: psnr_vs_float (dB against the float engine's image; 99 when identical), pixels_off
 // (pixels with a channel off by more than 2 LSB), polygons, dropped (polygons the segment engine's
 // overload protection or full frame memory dropped). tools/bench.sh turns the JSON output into
@@ -37,6 +40,9 @@ namespace {
 
 const char* const kEngines[] = {"float", "segment", "segment-double", "quadtree", "quadtree-double"};
 constexpr int kRaster = 512;
+// The lists also rendered on two workers, and that case's suffix.
+const char* const kThreadLists[] = {"airfield_f0c0", "airfield_f0c1", "depth10", "depth40", "tris10k"};
+constexpr int kThreads = 2;
 
 // Uniform numbers that are the same with every standard library: mt19937_64's sequence is fixed by
 // the standard, std::uniform_real_distribution's mapping is not.
@@ -209,12 +215,14 @@ void set_counters(benchmark::State& state, const List& list, const Image& image,
 }
 
 // The image for the counters comes from a first, untimed render, which also warms the caches.
-void run_engine(benchmark::State& state, const List& list, const std::string& name) {
+void run_engine(benchmark::State& state, const List& list, const std::string& name, int threads) {
   const ScreenFrame& frame = list_frame(list);
   std::unique_ptr<RasterEngine> engine;
   EngineRun first;
   try {
-    engine = make_engine(name, EngineOptions{});
+    EngineOptions options;
+    options.threads = threads;
+    engine = make_engine(name, options);
     first = engine->render(frame);
   } catch (const InputError& e) {  // a list beyond the engine's capacities
     state.SkipWithError(e.what());
@@ -249,9 +257,16 @@ void register_all() {
   benchmark::AddCustomContext("llvmpipe", llvmpipe().version());  // into the JSON output, for RESULTS.md
   static const std::vector<List> lists = all_lists();
   for (const List& list : lists) {
-    for (const char* engine : kEngines)
+    const bool threaded =
+        std::find(std::begin(kThreadLists), std::end(kThreadLists), list.name) != std::end(kThreadLists);
+    for (const char* engine : kEngines) {
       register_case(list.name + "/" + engine,
-                    [&list, name = std::string(engine)](benchmark::State& s) { run_engine(s, list, name); });
+                    [&list, name = std::string(engine)](benchmark::State& s) { run_engine(s, list, name, 1); });
+      if (threaded)
+        register_case(
+            list.name + "/" + engine + "@" + std::to_string(kThreads),
+            [&list, name = std::string(engine)](benchmark::State& s) { run_engine(s, list, name, kThreads); });
+    }
     register_case(list.name + "/llvmpipe", [&list](benchmark::State& s) { run_llvmpipe(s, list); });
   }
 }
