@@ -144,7 +144,6 @@ class ArchModel {
     reset();
     std::size_t next_root = 0;
     long long t = 0;
-    std::vector<int> active_pe, active_px;
     for (;;) {
       // Input port.
       if (next_root < roots.size()) {
@@ -163,11 +162,10 @@ class ArchModel {
           }
         }
       }
-      // PEs and pixel processors, all reading the state at the start of the cycle.
-      active_pe.assign(active_pes_.begin(), active_pes_.end());
-      for (int p : active_pe) step_pe(p, t, masks, st, tracer);
-      active_px.assign(active_pixels_.begin(), active_pixels_.end());
-      for (int u : active_px) step_pixel(u, t, sink, st, tracer);
+      // PEs and pixel processors, all reading the state at the start of the cycle (only the clock
+      // edge, commit, changes the active lists).
+      for (int p : active_pes_) step_pe(p, t, masks, st, tracer);
+      for (int u : active_pixels_) step_pixel(u, t, sink, st, tracer);
       // The clock edge.
       commit(t, masks, st, tracer);
       ++t;
@@ -203,6 +201,7 @@ class ArchModel {
     // the child leaves the to-do list.
     bool child_valid = false;
     hls::QuadChild<P> child;
+    int stalled_on = -1;  // the full output FIFO the kept (covered) child waits for, else -1
   };
   struct Pe {
     int stage = 0;
@@ -289,6 +288,7 @@ class ArchModel {
         p.work->lifo.clear();
         p.work->slot = -1;
         p.work->child_valid = false;
+        p.work->stalled_on = -1;
       }
     }
     active_pes_.clear();
@@ -333,6 +333,11 @@ class ArchModel {
     bool can_load = !pe.busy;
     if (pe.busy) {
       Work& w = *pe.work;
+      if (w.stalled_on >= 0 && fifos_[std::size_t(w.stalled_on)].start_count() >= cfg_.fifo_depth) {
+        ++st.pe_stall_cycles[std::size_t(index)];
+        return;  // still stalled: the same kept child, its output still full (model speed only)
+      }
+      w.stalled_on = -1;
       const QuadItem<P>& held = pool_[std::size_t(w.slot)];
       int q = 0;
       while (((pe.todo >> q) & 1u) == 0) ++q;
@@ -348,6 +353,7 @@ class ArchModel {
       if (child.covered) {
         if (!room) {
           ++st.pe_stall_cycles[std::size_t(index)];
+          w.stalled_on = dest;
           return;  // stall: the same child again next cycle
         }
         const int slot = allocate();
