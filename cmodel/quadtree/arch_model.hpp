@@ -144,7 +144,6 @@ class ArchModel {
     reset();
     std::size_t next_root = 0;
     long long t = 0;
-    std::vector<int> active_pe, active_px;
     for (;;) {
       // Input port.
       if (next_root < roots.size()) {
@@ -163,11 +162,10 @@ class ArchModel {
           }
         }
       }
-      // PEs and pixel processors, all reading the state at the start of the cycle.
-      active_pe.assign(active_pes_.begin(), active_pes_.end());
-      for (int p : active_pe) step_pe(p, t, masks, st, tracer);
-      active_px.assign(active_pixels_.begin(), active_pixels_.end());
-      for (int u : active_px) step_pixel(u, t, sink, st, tracer);
+      // PEs and pixel processors, all reading the state at the start of the cycle (only the clock
+      // edge, commit, changes the active lists).
+      for (int p : active_pes_) step_pe(p, t, masks, st, tracer);
+      for (int u : active_pixels_) step_pixel(u, t, sink, st, tracer);
       // The clock edge.
       commit(t, masks, st, tracer);
       ++t;
@@ -197,6 +195,13 @@ class ArchModel {
   struct Work {
     int slot = -1;          // the window held (an item slot)
     std::vector<int> lifo;  // stacks: pending windows (item slots)
+    // Model-speed device, not hardware: the evaluation of the child the PE offers while its output
+    // is full. The hardware re-evaluates it every stalled cycle; evaluate_child depends only on the
+    // held window and the child's number, so the kept result is what it would compute. Valid until
+    // the child leaves the to-do list.
+    bool child_valid = false;
+    hls::QuadChild<P> child;
+    int stalled_on = -1;  // the full output FIFO the kept (covered) child waits for, else -1
   };
   struct Pe {
     int stage = 0;
@@ -282,6 +287,8 @@ class ArchModel {
       if (p.work) {
         p.work->lifo.clear();
         p.work->slot = -1;
+        p.work->child_valid = false;
+        p.work->stalled_on = -1;
       }
     }
     active_pes_.clear();
@@ -326,6 +333,11 @@ class ArchModel {
     bool can_load = !pe.busy;
     if (pe.busy) {
       Work& w = *pe.work;
+      if (w.stalled_on >= 0 && fifos_[std::size_t(w.stalled_on)].start_count() >= cfg_.fifo_depth) {
+        ++st.pe_stall_cycles[std::size_t(index)];
+        return;  // still stalled: the same kept child, its output still full (model speed only)
+      }
+      w.stalled_on = -1;
       const QuadItem<P>& held = pool_[std::size_t(w.slot)];
       int q = 0;
       while (((pe.todo >> q) & 1u) == 0) ++q;
@@ -333,17 +345,22 @@ class ArchModel {
       const bool to_lifo = level < pe.last_level;
       const int dest = pe.out_base + (pe.out_by_quadrant ? q : 0);
       const bool room = to_lifo || fifos_[std::size_t(dest)].start_count() < cfg_.fifo_depth;
-      hls::evaluate_child(held.w, q, n_, false, child_, cfg_.side_log2);
-      if (child_.covered) {
+      if (!w.child_valid) {
+        hls::evaluate_child(held.w, q, n_, false, w.child, cfg_.side_log2);
+        w.child_valid = true;
+      }
+      const hls::QuadChild<P>& child = w.child;
+      if (child.covered) {
         if (!room) {
           ++st.pe_stall_cycles[std::size_t(index)];
+          w.stalled_on = dest;
           return;  // stall: the same child again next cycle
         }
         const int slot = allocate();
         QuadItem<P>& it = pool_[std::size_t(slot)];
         const QuadItem<P>& parent = pool_[std::size_t(w.slot)];  // the pool may have grown
-        it.w = child_.window;
-        it.samples = child_.samples;
+        it.w = child.window;
+        it.samples = child.samples;
         it.piece = parent.piece;
         if (to_lifo) {
           w.lifo.push_back(slot);
@@ -354,16 +371,17 @@ class ArchModel {
         ++st.level[std::size_t(level)].covered;
         PieceStats& ps = st.pieces[it.piece];
         ps.deepest_level = std::max(ps.deepest_level, level);
-        if (tracer) tracer->emit(t, index, q, it, child_.full);
+        if (tracer) tracer->emit(t, index, q, it, child.full);
       }
       ++st.level[std::size_t(level)].tested;
       ++st.pe_busy_cycles[std::size_t(index)];
       const QuadItem<P>& parent = pool_[std::size_t(w.slot)];
-      if (child_.full && parent.w.poly.opaque) {
+      if (child.full && parent.w.poly.opaque) {
         ++st.level[std::size_t(level)].full_opaque;
         if (cfg_.masks) sets_.push_back({level - 1, int(parent.w.x.value()), int(parent.w.y.value()), q});
       }
       pe.todo &= ~(1u << q);
+      w.child_valid = false;
       if (pe.todo == 0) {
         pe.busy = false;
         release(w.slot);
@@ -488,7 +506,6 @@ class ArchModel {
   std::vector<std::pair<int, int>> pending_;  // (FIFO, item slot) pushed this cycle
   std::vector<QuadItem<P>> pool_;
   std::vector<int> free_;
-  hls::QuadChild<P> child_;
   std::vector<MaskSet> sets_;
   long long in_flight_ = 0;  // items in FIFOs or LIFOs, pending pushes, and windows held by PEs
 };

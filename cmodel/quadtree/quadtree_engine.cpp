@@ -25,6 +25,7 @@ struct QuadOptions {
   int fifo = 2;
   double clock_mhz = 100;
   int side_log2 = hls::kDefaultSideLog2;  // spp = 4^t samples per pixel
+  int threads = 1;                        // workers for one image (PixelFrame::set_threads)
 };
 
 constexpr double kFrameBudgetMs = 20.0;  // seed 004: t_0 = 20 ms (50 Hz)
@@ -71,6 +72,7 @@ class QuadPipeline {
     rep["masks"] = options_.masks;
     rep["fifo_depth"] = options_.fifo;
     rep["samples_per_pixel"] = 1 << (2 * options_.side_log2);
+    rep["threads"] = options_.threads;
 
     // Formatter and setup, in priority order (front to back).
     auto t0 = Clock::now();
@@ -80,6 +82,7 @@ class QuadPipeline {
 
     // Tables and the light point unit (lights rasterised before the polygons).
     t0 = Clock::now();
+    pixels_.set_threads(options_.threads);
     pixels_.begin(frame, log2, options_.side_log2);
     const double lights_ms = ms_since(t0);
 
@@ -88,6 +91,7 @@ class QuadPipeline {
     hls::mask_clear(*masks_, log2);
     quad::ArchModel<P> model(arch, cfg);
     const quad::ArchStats st = model.run(roots, *masks_, pixels_);
+    pixels_.finish();
     const double raster_ms = ms_since(t0);
 
     // Resolve.
@@ -112,10 +116,12 @@ class QuadPipeline {
     quad::FrontEndStats fe;
     const std::vector<hls::QuadWindow<P>> roots = quad::front_end<P>(part, arch.raster_log2, fe, options_.side_log2);
     pixels_.keep_samples(true);
+    pixels_.set_threads(1);  // each part is already on its own worker
     pixels_.begin(part, arch.raster_log2, options_.side_log2);
     hls::mask_clear(*masks_, arch.raster_log2);
     quad::ArchModel<P> model(arch, cfg);
     const quad::ArchStats st = model.run(roots, *masks_, pixels_);
+    pixels_.finish();
     return {{"polygons", part.polygons.size()},
             {"light_points", part.light_points.size()},
             {"pieces", roots.size()},
@@ -263,6 +269,7 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
     throw InputError("", "--snap",
                      "--snap applies to the float engine; the quadtree engine's formatter snaps by itself");
   QuadOptions o;
+  o.threads = std::max(1, options.threads);
   for (const auto& [key, value] : options.params) {
     if (key == "arch") {
       quad::Architecture::parse(value, 0, "--arch");  // the syntax; the level count is checked per frame

@@ -16,6 +16,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "common/job_stream.hpp"
+#include "common/parallel.hpp"
 #include "formatter/fog_table.hpp"
 #include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
@@ -151,47 +153,92 @@ class PixelFrame final : public PixelSink<P> {
   // Keep every taken sample's colour and arrival rank (the merge of rendering pipelines reads them,
   // quadtree/pixel_merge.hpp); off by default: the pixel state's sums are all the resolve needs.
   void keep_samples(bool on) { keep_samples_ = on; }
+  // Workers (EngineOptions::threads): with 2 or more, the pixel processor's colour half (sample
+  // colours into the pixels' sums, hls quad_pixel_accumulate) runs on a second thread, fed in
+  // record order, and the resolve is split into strips. The owned samples, which feed back into
+  // the masks and so into the timing, stay on the model's thread: same bits, same cycles.
+  void set_threads(int threads) { threads_ = std::max(1, threads); }
 
   // Loads the tables and the light covers of a frame and clears the pixel states.
   void begin(const ScreenFrame& frame, int raster_log2, int side_log2 = hls::kDefaultSideLog2) {
     n_ = 1 << raster_log2;
     log2_ = raster_log2;
+    colour_jobs_.finish();  // a frame left unfinished
     side_log2_ = side_log2;
     spp_ = 1 << (2 * side_log2);
-    QuadFront<P>::fill_fog(*tables_, frame.fog);
+    // The fog table depends on the fog's range only: refilled when that changes.
+    if (!fog_filled_ || frame.fog.start != fog_start_ || frame.fog.end != fog_end_) {
+      QuadFront<P>::fill_fog(*tables_, frame.fog);
+      fog_filled_ = true;
+      fog_start_ = frame.fog.start;
+      fog_end_ = frame.fog.end;
+    }
     for (int c = 0; c < 3; ++c) {
       tables_->fog_colour[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.fog.colour[c], 0.0, 1.0) * 255)));
       tables_->background[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.background[c], 0.0, 1.0) * 255)));
     }
     const std::size_t pixels = std::size_t(n_) * std::size_t(n_);
-    states_.assign(pixels, hls::QuadPixelState<P>());
-    owners_.assign(pixels * std::size_t(spp_), -1);
-    cover_index_.assign(pixels, -1);
+    if (states_.size() != pixels || owners_.size() != pixels * std::size_t(spp_)) {
+      states_.assign(pixels, hls::QuadPixelState<P>());
+      owners_.assign(pixels * std::size_t(spp_), -1);
+      stamp_.assign(pixels, 0);
+      frame_stamp_ = 0;
+      cover_index_.assign(pixels, -1);
+      cover_pixels_.clear();
+    }
+    if (++frame_stamp_ == 0) {  // the stamps wrapped: every pixel cleared once
+      std::fill(stamp_.begin(), stamp_.end(), 0u);
+      frame_stamp_ = 1;
+    }
+    for (std::size_t pix : cover_pixels_) cover_index_[pix] = -1;
+    cover_pixels_.clear();
     covers_.clear();
     sample_colour_.assign(keep_samples_ ? pixels * std::size_t(spp_) : 0, {});
     sample_rank_.assign(keep_samples_ ? pixels * std::size_t(spp_) : 0, 0);
     light_samples_ = rasterise_lights(frame);
     samples_written_ = 0;
+    hls::quad_pixel_clear(empty_state_);
+    if (threads_ > 1) colour_jobs_.start([this](ColourJob& j) { colour(j.w, j.pix, j.fresh); });
   }
+
+  // The end of the frame's records: waits for the colour worker (before any read of the sums).
+  void finish() { colour_jobs_.finish(); }
 
   std::uint64_t pixel(int, const QuadItem<P>& it, bool& became_full) override {
     const int x = int(it.w.x.value()), y = int(it.w.y.value());
     const std::size_t pix = std::size_t(y) * std::size_t(n_) + std::size_t(x);
-    const std::uint64_t f =
-        hls::quad_pixel_process(it.w, it.samples, *tables_, cover(pix), states_[pix], side_log2_).value();
+    // The pixel processor (hls quad_pixel_process) in its two halves: the samples taken here, the
+    // colours here or on the colour worker.
+    hls::QuadPixelState<P>& state = touch(pix);
+    const hls::PixelSampleMask fresh = hls::quad_pixel_fresh(it.samples, state.owned);
+    state.owned = hls::PixelSampleMask(state.owned.value() | fresh.value());
+    const std::uint64_t f = fresh.value();
     const std::uint64_t all = spp_ == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << spp_) - 1;
-    became_full = f != 0 && states_[pix].owned.value() == all;
+    became_full = f != 0 && state.owned.value() == all;
     samples_written_ += __builtin_popcountll(f);
-    for (int s = 0; s < spp_; ++s)
-      if ((f >> s) & 1u) owners_[pix * std::size_t(spp_) + std::size_t(s)] = std::int32_t(it.w.poly.id.value());
-    if (keep_samples_) keep_taken(it.w, pix, f);
+    std::int32_t* owners = owners_.data() + pix * std::size_t(spp_);
+    const std::int32_t id = std::int32_t(it.w.poly.id.value());
+    if (f == all) std::fill(owners, owners + spp_, id);
+    else
+      for (std::uint64_t m = f; m != 0; m &= m - 1) owners[__builtin_ctzll(m)] = id;
+    if (f == 0) return f;
+    if (colour_jobs_.running()) {
+      ColourJob& job = colour_jobs_.push();
+      job.w = it.w;
+      job.pix = pix;
+      job.fresh = f;
+    } else {
+      colour(it.w, pix, f);
+    }
     return f;
   }
 
   // What the merge of rendering pipelines reads (keep_samples on): per pixel the samples polygons
   // own and their light cover, per sample its owner, colour and arrival rank.
-  std::uint64_t owned(std::size_t pix) const { return states_[pix].owned.value(); }
-  std::int32_t owner(std::size_t pix, int s) const { return owners_[pix * std::size_t(spp_) + std::size_t(s)]; }
+  std::uint64_t owned(std::size_t pix) const { return touched(pix) ? states_[pix].owned.value() : 0; }
+  std::int32_t owner(std::size_t pix, int s) const {
+    return touched(pix) ? owners_[pix * std::size_t(spp_) + std::size_t(s)] : -1;
+  }
   const hls::QuadLightCover<P>& cover(std::size_t pix) const {
     const int ci = cover_index_[pix];
     return ci >= 0 ? covers_[std::size_t(ci)] : no_cover_;
@@ -211,18 +258,33 @@ class PixelFrame final : public PixelSink<P> {
   void resolve(Image& image, IdBuffer& ids) const {
     image = Image(n_, n_);
     ids = IdBuffer(n_, n_);
+    const int strips = threads_ > 1 ? 4 * threads_ : 1;
+    parallel_for(std::size_t(strips), threads_, [&](std::size_t k, int) {
+      resolve_rows(int(k) * n_ / strips, (int(k) + 1) * n_ / strips, image, ids);
+    });
+  }
+
+  // Rows [y0, y1) of the resolve (rows are independent: strips may run on several workers).
+  void resolve_rows(int y0, int y1, Image& image, IdBuffer& ids) const {
     std::vector<std::int32_t> own(static_cast<std::size_t>(spp_));
-    for (int py = 0; py < n_; ++py)
+    // A pixel no polygon and no light touched shows the background: resolved once.
+    hls::UInt<8> empty_rgb[3];
+    hls::quad_pixel_resolve(empty_state_, *tables_, no_cover_, empty_rgb, side_log2_);
+    for (int py = y0; py < y1; ++py)
       for (int px = 0; px < n_; ++px) {
         const std::size_t pix = std::size_t(py) * std::size_t(n_) + std::size_t(px);
+        std::uint8_t* dst = image.at(px, py);
+        if (!touched(pix)) {
+          hls::UInt<8> rgb[3];
+          if (cover_index_[pix] >= 0) hls::quad_pixel_resolve(empty_state_, *tables_, cover(pix), rgb, side_log2_);
+          for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t((cover_index_[pix] >= 0 ? rgb : empty_rgb)[c].value());
+          ids.id[pix] = -1;
+          continue;
+        }
         hls::UInt<8> rgb[3];
         hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb, side_log2_);
-        std::uint8_t* dst = image.at(px, py);
         for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(rgb[c].value());
-        const std::size_t first = pix * std::size_t(spp_);
-        std::copy(owners_.begin() + std::ptrdiff_t(first), owners_.begin() + std::ptrdiff_t(first + std::size_t(spp_)),
-                  own.begin());
-        ids.id[pix] = majority_owner(own.data(), spp_);
+        ids.id[pix] = pixel_id(pix, own);
       }
   }
 
@@ -234,6 +296,36 @@ class PixelFrame final : public PixelSink<P> {
   long long samples_written() const { return samples_written_; }
 
  private:
+  // The colour half of a record: its fresh samples' colours into the pixel's sums.
+  void colour(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t fresh) {
+    hls::quad_pixel_accumulate(w, hls::PixelSampleMask(fresh), *tables_, cover(pix), states_[pix].sum, side_log2_);
+    if (keep_samples_) keep_taken(w, pix, fresh);
+  }
+  struct ColourJob {
+    hls::QuadWindow<P> w;
+    std::size_t pix = 0;
+    std::uint64_t fresh = 0;
+  };
+
+  bool touched(std::size_t pix) const { return stamp_[pix] == frame_stamp_; }
+  // The pixel's state for this frame: cleared when the frame first reaches it.
+  hls::QuadPixelState<P>& touch(std::size_t pix) {
+    if (!touched(pix)) {
+      stamp_[pix] = frame_stamp_;
+      hls::quad_pixel_clear(states_[pix]);
+      const auto first = owners_.begin() + std::ptrdiff_t(pix * std::size_t(spp_));
+      std::fill(first, first + spp_, -1);
+    }
+    return states_[pix];
+  }
+  // The majority owner of a touched pixel's samples (one owner: no sort).
+  std::int32_t pixel_id(std::size_t pix, std::vector<std::int32_t>& own) const {
+    const std::int32_t* first = owners_.data() + pix * std::size_t(spp_);
+    if (std::all_of(first + 1, first + spp_, [&](std::int32_t o) { return o == first[0]; })) return first[0];
+    std::copy(first, first + spp_, own.begin());
+    return majority_owner(own.data(), spp_);
+  }
+
   // The colours of the samples a record took (the pixel processor's own per-sample function) and
   // their arrival order.
   void keep_taken(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t taken) {
@@ -275,6 +367,7 @@ class PixelFrame final : public PixelSink<P> {
           const std::size_t pix = std::size_t(row / side) * std::size_t(n_) + std::size_t(i / side);
           if (cover_index_[pix] < 0) {
             cover_index_[pix] = int(covers_.size());
+            cover_pixels_.push_back(pix);
             covers_.push_back(hls::QuadLightCover<P>{});
           }
           hls::QuadLightCover<P>& cv = covers_[std::size_t(cover_index_[pix])];
@@ -292,9 +385,17 @@ class PixelFrame final : public PixelSink<P> {
 
   int n_ = 0, log2_ = 0, side_log2_ = hls::kDefaultSideLog2, spp_ = hls::kSamplesPerPixel;
   std::unique_ptr<hls::QuadPixelTables<P>> tables_;
+  // Model-speed device, not hardware: the pixel states and sample owners are cleared lazily. A
+  // pixel whose stamp is not the frame's holds the cleared state (no sample owned, owners -1), so
+  // a frame clears only the pixels its polygons reach instead of N^2 states and S^2 N^2 owners;
+  // likewise only the light covers' pixels are reset.
   std::vector<hls::QuadPixelState<P>> states_;
   std::vector<std::int32_t> owners_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t frame_stamp_ = 0;
   std::vector<int> cover_index_;
+  std::vector<std::size_t> cover_pixels_;  // the pixels with a light cover (their cover_index_ >= 0)
+  hls::QuadPixelState<P> empty_state_{};
   std::vector<hls::QuadLightCover<P>> covers_;
   // A member rather than a function-local static: clang 14's ASan build once aborted (free():
   // invalid pointer) compiling the static's guarded initialisation of this large aggregate.
@@ -305,6 +406,10 @@ class PixelFrame final : public PixelSink<P> {
   std::uint64_t next_rank_ = 0;
   long light_samples_ = 0;
   long long samples_written_ = 0;  // samples polygons took (the pixel processor's work)
+  int threads_ = 1;
+  bool fog_filled_ = false;
+  double fog_start_ = 0, fog_end_ = 0;
+  JobStream<ColourJob> colour_jobs_;  // declared last: its worker stops before the members it uses go
 };
 
 }  // namespace cig::quad

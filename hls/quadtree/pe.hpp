@@ -41,6 +41,11 @@ std::uint64_t pixel_samples(const QuadWindow<P>& c, int side_log2, bool& full) {
     const EdgeGradient& b = c.poly.b[e];
     const std::int64_t ap = a.value() > 0 ? a.value() : 0, bp = b.value() > 0 ? b.value() : 0;
     const Int<34> top_left = Int<34>(c.d[e].value() - (side - 1) * (ap + bp));
+    // An edge whose minimum over the pixel's samples is >= 0 clears no bit: skip its lanes (the
+    // same mask; unused edge slots, A = B = 0 and d = 0, always skip).
+    const std::int64_t am = a.value() < 0 ? a.value() : 0, bm = b.value() < 0 ? b.value() : 0;
+    const Int<34> minimum = Int<34>(top_left.value() + (side - 1) * (am + bm));
+    if (minimum.value() >= 0) continue;
     for (int dj = 0; dj < kMaxSamplesPerSide; ++dj) {
       if (dj >= side) break;
       for (int di = 0; di < kMaxSamplesPerSide; ++di) {

@@ -70,23 +70,37 @@ void quad_sample_colour(const QuadWindow<P>& px, int s, const QuadPixelTables<P>
   for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
 }
 
+// The samples of a record that no earlier polygon owns: they become this polygon's.
+inline PixelSampleMask quad_pixel_fresh(const PixelSampleMask& samples, const PixelSampleMask& owned) {
+  return PixelSampleMask(samples.value() & ~owned.value());
+}
+
+// The colour half of a record: the fresh samples' colours added to the pixel's sums. Only the
+// sums depend on it (the owned samples, and so the masks and the timing, do not).
+template <class P>
+void quad_pixel_accumulate(const QuadWindow<P>& px, const PixelSampleMask& fresh, const QuadPixelTables<P>& t,
+                           const QuadLightCover<P>& lights, typename P::Accum (&sum)[3],
+                           int side_log2 = kDefaultSideLog2) {
+  const int side = 1 << side_log2;
+  for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
+    if (s >= side * side) break;
+    if (!fresh.bit(s)) continue;
+    typename P::Sample colour[3];
+    quad_sample_colour(px, s, t, lights, colour, side_log2);
+    for (int c = 0; c < 3; ++c) sum[c] = P::accumulate(sum[c], colour[c]);
+  }
+}
+
 // One pixel record (a level-n window and its covered samples, S = 2^side_log2 a side); returns
 // the samples it took.
 template <class P>
 PixelSampleMask quad_pixel_process(const QuadWindow<P>& px, const PixelSampleMask& samples, const QuadPixelTables<P>& t,
                                    const QuadLightCover<P>& lights, QuadPixelState<P>& st,
                                    int side_log2 = kDefaultSideLog2) {
-  const std::uint64_t fresh = samples.value() & ~st.owned.value();
-  const int side = 1 << side_log2;
-  for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
-    if (s >= side * side) break;
-    if (((fresh >> s) & 1u) == 0) continue;
-    typename P::Sample colour[3];
-    quad_sample_colour(px, s, t, lights, colour, side_log2);
-    for (int c = 0; c < 3; ++c) st.sum[c] = P::accumulate(st.sum[c], colour[c]);
-  }
-  st.owned = PixelSampleMask(st.owned.value() | fresh);
-  return PixelSampleMask(fresh);
+  const PixelSampleMask fresh = quad_pixel_fresh(samples, st.owned);
+  quad_pixel_accumulate(px, fresh, t, lights, st.sum, side_log2);
+  st.owned = PixelSampleMask(st.owned.value() | fresh.value());
+  return fresh;
 }
 
 // The pixel's final colour: owned samples as summed, the others show their light or the

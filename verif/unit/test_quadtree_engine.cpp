@@ -3,6 +3,7 @@
 // and the architecture only changes the cycles, never the image.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,51 @@ TEST(QuadtreeEngine, ArchitectureChangesCyclesNotTheImage) {
   }
   // One PE for every level does every test in sequence: never faster than the pipeline.
   EXPECT_GE(previous, pipe.report["cycles"]["frame"].get<long long>());
+}
+
+// The report without its timings and thread count (what must not depend on the workers).
+nlohmann::ordered_json counts_of(const nlohmann::ordered_json& report) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (auto it = report.begin(); it != report.end(); ++it) {
+    const std::string& key = it.key();
+    const bool timing = key.size() >= 3 && key.compare(key.size() - 3, 3, "_ms") == 0;
+    if (key == "threads" || (timing && key != "frame_ms" && key != "budget_ms")) continue;
+    out[key] = it->is_object() ? counts_of(*it) : *it;
+  }
+  return out;
+}
+
+// --threads: the colour work on a second worker and the resolve in strips give the same image,
+// ids and cycle counts (every count of the report) as one thread; one engine renders two frames
+// in a row (its pixel states cleared lazily), the fixed engine and its double twin, a frame with
+// light points (the airfield, 128 lines) and the depth-complexity list.
+TEST(QuadtreeEngine, ThreadsGiveTheSameImageAndCycles) {
+  const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
+  ScenePipeline pipeline(scene);
+  nlohmann::ordered_json unused;
+  std::vector<ScreenFrame> frames = {pipeline.geometry(0, 1, unused), depth10(), pipeline.geometry(2, 0, unused)};
+  frames[0].raster = 128;
+  frames[2].raster = 256;
+  for (const char* engine : {"quadtree", "quadtree-double"}) {
+    EngineOptions one, two;
+    two.threads = 2;
+    const auto e1 = make_engine(engine, one);
+    const auto e2 = make_engine(engine, two);
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      SCOPED_TRACE(std::string(engine) + " frame " + std::to_string(k));
+      const EngineRun a = e1->render(frames[k]);
+      const EngineRun b = e2->render(frames[k]);
+      EXPECT_EQ(a.out.image.rgb, b.out.image.rgb);
+      EXPECT_EQ(a.out.ids.id, b.out.ids.id);
+      EXPECT_EQ(a.report["cycles"]["frame"], b.report["cycles"]["frame"]);
+      EXPECT_EQ(counts_of(a.report), counts_of(b.report));
+      EXPECT_EQ(b.report["threads"].get<int>(), 2);
+      // A fresh engine gives the same frame (nothing kept from the frame before).
+      const EngineRun fresh = make_engine(engine, one)->render(frames[k]);
+      EXPECT_EQ(fresh.out.image.rgb, a.out.image.rgb);
+      EXPECT_EQ(fresh.out.ids.id, a.out.ids.id);
+    }
+  }
 }
 
 TEST(QuadtreeEngine, RejectsBadOptions) {
