@@ -34,9 +34,11 @@ def load_cases(path):
             case["error"] = b.get("error_message", "error")
             continue
         case["times"].append(b["cpu_time"] * TO_MS[b["time_unit"]])
+        case.setdefault("walls", []).append(b["real_time"] * TO_MS[b["time_unit"]])
         case["counters"] = {k: b[k] for k in COUNTERS if k in b}
     for case in cases.values():
         case["ms"] = statistics.median(case["times"]) if case["times"] else None
+        case["wall_ms"] = statistics.median(case["walls"]) if case.get("walls") else None
     return doc.get("context", {}), sorted(lists, key=natural_key), cases  # random interleaving mixes them
 
 
@@ -102,6 +104,18 @@ def psnr_rows(lists, cases):
     return rows + [["**lowest**"] + ["**%.1f**" % lowest[r] if r in lowest else "-" for r in renderers]]
 
 
+def threads_rows(lists, cases):
+    """The float engine's wall time on one and on two workers (strips of the image), and the ratio."""
+    rows = []
+    for name in lists:
+        one = cases.get((name, "float"), {}).get("wall_ms")
+        two = cases.get((name, "float-2threads"), {}).get("wall_ms")
+        if one is None or two is None:
+            continue
+        rows.append([name, "%.1f" % one, "%.1f" % two, "%.2f" % (one / two)])
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("json")
@@ -125,6 +139,10 @@ def main():
     print("## Image check: PSNR against the float engine (dB)\n")
     print("Polygons the segment engine dropped (overload protection, full frame memory) are noted.\n")
     print(table(["list"] + ENGINES[1:] + ["llvmpipe"], psnr_rows(lists, cases)))
+    rows = threads_rows(lists, cases)
+    if rows:
+        print("\n## Float engine on two threads (strips of the image, the same bits): wall time (ms)\n")
+        print(table(["list", "1 thread", "2 threads", "speed-up"], rows))
 
 
 if __name__ == "__main__":

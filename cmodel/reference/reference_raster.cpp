@@ -180,6 +180,15 @@ class ReferenceFrame {
     bin();
     set_up_polygons(depth_source);
     decide_light_visibility();
+    colour_.reserve(frame_.polygons.size());
+    for (const ScreenPolygon& p : frame_.polygons) colour_.push_back(p.colour);
+    double sum[3] = {0, 0, 0};
+    for (int s = 0; s < side * side; ++s) {
+      sum[0] += frame_.background.r;
+      sum[1] += frame_.background.g;
+      sum[2] += frame_.background.b;
+    }
+    store_pixel(sum, side * side, background_pixel_);
   }
 
   // The strips are independent once set up: `threads` workers take them in turn, each with its own
@@ -323,33 +332,59 @@ class ReferenceFrame {
     return first > hi ? 0 : std::uint64_t((hi - first) / 2 + 1);
   }
 
-  // Samples a..b of row j (one block) of polygon pi: the z-buffer (or list order) test and write.
-  // The block is skipped when none of its samples can be won (kBlockSamples above).
-  void draw_block(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, double il, double slope,
-                  double xl, StripWork& w) const {
-    const bool opaque = frame_.polygons[pi].opaque;
+  // Intensity along a row: il + slope*(x - xl).
+  struct RowShade {
+    double il, slope, xl;
+    float at(int i) const { return float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0)); }
+  };
+
+  // Samples a..b of row j (one block) of polygon pi, each a z-buffer test and write. The block is
+  // skipped when none of its samples can be won (kBlockSamples above). Screen-door polygons
+  // visit every other sample, those with (i + j) even.
+  void draw_block_depth(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
+                        StripWork& w) const {
     const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
-    const bool priority = visibility_ == Visibility::kPriority;
-    if (priority ? w.block_owned[blk] == block_width(a) : dp.upper_bound(a, b, j) <= w.block_w[blk] * (1 + kDepthTie))
-      return;
+    if (dp.upper_bound(a, b, j) <= w.block_w[blk] * (1 + kDepthTie)) return;
+    const bool opaque = frame_.polygons[pi].opaque;
     const std::int32_t id = std::int32_t(pi);
     const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
-    bool wrote = false;
-    for (int i = a; i <= b; ++i) {
-      if (!screen_door_passes(opaque, i, j)) continue;
-      const std::size_t idx = row + std::size_t(i);
-      const double z = dp.at(double(i), double(j));
-      // Polygons come in list order, so under kPriority the first to cover a sample keeps it.
-      if (priority ? w.owner[idx] < 0 : z > w.depth[idx] * (1 + kDepthTie)) {
-        if (w.owner[idx] < 0) ++w.block_owned[blk];
-        w.depth[idx] = z;
-        w.owner[idx] = id;
-        w.intensity[idx] = float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0));
-        ++w.samples_written;
-        wrote = true;
+    // Locals, so that the stores below cannot alias them: at() term by term, in its order.
+    const DepthPlane plane = dp;
+    const double ey = plane.b * (double(j) - plane.y0);
+    double* depth = w.depth.data() + row;
+    std::int32_t* owner = w.owner.data() + row;
+    float* intensity = w.intensity.data() + row;
+    std::uint64_t written = 0;
+    for (int i = opaque ? a : a + ((a + j) & 1); i <= b; i += opaque ? 1 : 2) {
+      const double z = std::clamp(plane.w0 + plane.a * (double(i) - plane.x0) + ey, plane.w_lo, plane.w_hi);
+      if (z > depth[i] * (1 + kDepthTie)) {
+        depth[i] = z;
+        owner[i] = id;
+        intensity[i] = shade.at(i);
+        ++written;
       }
     }
-    if (wrote && !priority) refresh_block(blk, row, w);
+    w.samples_written += written;
+    if (written) refresh_block(blk, row, w);
+  }
+
+  // The same under kPriority: polygons come in list order, so the first to cover a sample keeps it.
+  void draw_block_priority(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
+                           StripWork& w) const {
+    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
+    if (w.block_owned[blk] == block_width(a)) return;
+    const bool opaque = frame_.polygons[pi].opaque;
+    const std::int32_t id = std::int32_t(pi);
+    const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
+    for (int i = opaque ? a : a + ((a + j) & 1); i <= b; i += opaque ? 1 : 2) {
+      const std::size_t idx = row + std::size_t(i);
+      if (w.owner[idx] >= 0) continue;
+      ++w.block_owned[blk];
+      w.depth[idx] = dp.at(double(i), double(j));
+      w.owner[idx] = id;
+      w.intensity[idx] = shade.at(i);
+      ++w.samples_written;
+    }
   }
 
   int block_width(int a) const { return std::min(kBlockSamples, m_ - a / kBlockSamples * kBlockSamples); }
@@ -370,13 +405,15 @@ class ReferenceFrame {
       if (cov.empty) continue;
       const DepthPlane& dp = depth_plane_[pi];
       for_each_covered_run(cov, m_, row0, row1, [&](int j, const RowSpan& s, int lo, int hi) {
-        // Intensity along the row: il + slope*(x - xl).
         const double il = edge_intensity(cov, p, s.el, double(j), s.xl);
         const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
-        const double slope = s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0;
+        const RowShade shade{il, s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0, s.xl};
         w.samples_covered += run_samples(p.opaque, lo, hi, j);
-        for (int a = lo; a <= hi; a = (a / kBlockSamples + 1) * kBlockSamples)
-          draw_block(pi, dp, a, std::min(hi, (a / kBlockSamples + 1) * kBlockSamples - 1), j, row0, il, slope, s.xl, w);
+        for (int a = lo; a <= hi; a = (a / kBlockSamples + 1) * kBlockSamples) {
+          const int b = std::min(hi, (a / kBlockSamples + 1) * kBlockSamples - 1);
+          if (visibility_ == Visibility::kPriority) draw_block_priority(pi, dp, a, b, j, row0, shade, w);
+          else draw_block_depth(pi, dp, a, b, j, row0, shade, w);
+        }
       });
     }
   }
@@ -432,31 +469,97 @@ class ReferenceFrame {
     return frame_.background;
   }
 
-  // Resolve the strip: box filter of the side x side samples of each pixel, summed in sample order.
+  // Resolve the strip: box filter of the side x side samples of each pixel, summed in sample
+  // order. A pixel of background samples only (no polygon, no light) is background_pixel_.
   void resolve(int strip, const StripWork& w, RasterImage& out) const {
     const int row0 = strip * strip_rows_, side = lattice_.side;
     std::int32_t ids[kMaxReferenceSamplesPerSide * kMaxReferenceSamplesPerSide];
+    // sample_colour's polygon case (no light) on operands held in locals: the same operations.
+    const std::int32_t* owner = w.owner.data();
+    const std::int32_t* light = w.light.data();
+    const double* depth = w.depth.data();
+    const float* intensity = w.intensity.data();
+    const Fog& fog = frame_.fog;
+    const double fog_start = fog.start, fog_span = fog.end - fog.start;
+    const Rgb fog_colour = fog.colour;
+    auto polygon_colour = [&](std::size_t idx, std::int32_t o) {
+      const double f = std::clamp((1.0 / depth[idx] - fog_start) / fog_span, 0.0, 1.0);  // fog_factor
+      return Rgb((1 - f) * double(intensity[idx]) * colour_[std::size_t(o)] + f * fog_colour);
+    };
     for (int py = strip * strip_pixels_; py < (strip + 1) * strip_pixels_; ++py)
       for (int px = 0; px < n_; ++px) {
+        const std::size_t first = std::size_t(py * side - row0) * std::size_t(m_) + std::size_t(px * side);
+        std::uint8_t* dst = out.image.at(px, py);
+        std::int32_t& id = out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)];
+        if (w.owner[first] < 0 && background_only(w, first)) {
+          std::copy(background_pixel_, background_pixel_ + 3, dst);
+          id = -1;
+          continue;
+        }
         double sum[3] = {0, 0, 0};
         int nid = 0;
         bool one_owner = true;
         for (int sy = 0; sy < side; ++sy)
-          for (int sx = 0; sx < side; ++sx) {
-            const std::size_t idx = std::size_t(py * side + sy - row0) * std::size_t(m_) + std::size_t(px * side + sx);
-            ids[nid] = w.owner[idx];
-            one_owner = one_owner && ids[nid] == ids[0];
-            ++nid;
-            const Rgb c = sample_colour(w, idx);
+          for (int sx = 0; sx < side; ++sx, ++nid) {
+            const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
+            const std::int32_t o = owner[idx];
+            ids[nid] = o;
+            one_owner = one_owner && o == ids[0];
+            const Rgb c = light[idx] < 0 && o >= 0 ? polygon_colour(idx, o) : sample_colour(w, idx);
             sum[0] += c.r;
             sum[1] += c.g;
             sum[2] += c.b;
           }
-        std::uint8_t* dst = out.image.at(px, py);
-        for (int k = 0; k < 3; ++k) dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / nid, 0.0, 1.0) * 255.0));
-        // One owner is its own majority (the sort and count are for mixed pixels).
-        out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)] = one_owner ? ids[0] : majority_owner(ids, nid);
+        store_pixel(sum, nid, dst);
+        id = one_owner ? ids[0] : nid <= kSamplesPerPixel ? few_owners_majority(ids, nid) : majority_owner(ids, nid);
       }
+  }
+
+  // No polygon and no light on the pixel whose first sample is `first`.
+  bool background_only(const StripWork& w, std::size_t first) const {
+    for (int sy = 0; sy < lattice_.side; ++sy)
+      for (int sx = 0; sx < lattice_.side; ++sx) {
+        const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
+        if (w.owner[idx] >= 0 || w.light[idx] >= 0) return false;
+      }
+    return true;
+  }
+
+  static void store_pixel(const double* sum, int count, std::uint8_t* dst) {
+    for (int k = 0; k < 3; ++k) dst[k] = round_to_byte(std::clamp(sum[k] / count, 0.0, 1.0) * 255.0);
+  }
+
+  // std::lround of x in [0, 255] (half away from zero) without the library call: x - trunc(x) is
+  // exact there.
+  static std::uint8_t round_to_byte(double x) {
+    const int r = int(x);
+    return std::uint8_t(x - double(r) >= 0.5 ? r + 1 : r);
+  }
+
+  // majority_owner's rule (image/raster_image.hpp: the owner of most samples, ties to the earlier
+  // polygon, the background losing ties) by counting the few distinct owners, without the sort.
+  static std::int32_t few_owners_majority(const std::int32_t* ids, int count) {
+    std::int32_t owner[kSamplesPerPixel];
+    int n[kSamplesPerPixel], distinct = 0;
+    for (int s = 0; s < count; ++s) {
+      int d = 0;
+      while (d < distinct && owner[d] != ids[s]) ++d;
+      if (d == distinct) {
+        owner[distinct] = ids[s];
+        n[distinct++] = 0;
+      }
+      ++n[d];
+    }
+    std::int32_t best = -1;
+    int best_count = 0;
+    for (int d = 0; d < distinct; ++d) {
+      const bool earlier = owner[d] >= 0 && (best < 0 || owner[d] < best);
+      if (n[d] > best_count || (n[d] == best_count && earlier)) {
+        best = owner[d];
+        best_count = n[d];
+      }
+    }
+    return best;
   }
 
   const ScreenFrame& frame_;
@@ -468,6 +571,8 @@ class ReferenceFrame {
   std::vector<CoverageSetup> coverage_;
   std::vector<DepthPlane> depth_plane_;
   std::vector<char> light_visible_;
+  std::vector<Rgb> colour_;           // the polygons' colours, side by side
+  std::uint8_t background_pixel_[3];  // the resolve of side x side background samples
 };
 
 RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
