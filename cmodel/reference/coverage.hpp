@@ -180,6 +180,62 @@ struct RowSpan {
   int el, er;  // edges that produced the left and right ends
 };
 
+// The candidate samples of row j: [i0, i1] from the rounded span, which lies within far less than
+// a sample of the exact one, so every sample the exact test can accept is inside. False when the
+// row has no candidates.
+inline bool row_candidates(const CoverageSetup& s, int m, int j, RowSpan& span, int& i0, int& i1) {
+  s.row_span(double(j), span.xl, span.xr, span.el, span.er);
+  if (!(span.xl <= span.xr)) return false;
+  i0 = int(std::max(0.0, std::floor(span.xl)));
+  i1 = int(std::min(double(m - 1), std::ceil(span.xr)));
+  return true;
+}
+
+// The covered samples of candidates [i0, i1] of row j as runs of consecutive samples: run(lo, hi)
+// in increasing order. Exactly the samples covers() accepts, with far fewer tests: along a row,
+// each edge function as computed (qx - ax, times dy, subtracted from a constant, each rounded) is
+// monotone in qx, since rounding is monotone; so each edge accepts a half-line (or all or nothing
+// when horizontal) and a convex polygon's covered samples are one run, found by testing inward
+// from both ends. The crossing rule (non-convex) is tested sample by sample.
+template <class RunFn>
+void covered_runs(const CoverageSetup& s, int j, int i0, int i1, RunFn&& run) {
+  const double y = double(j);
+  if (s.convex) {
+    int lo = i0;
+    while (lo <= i1 && !s.covers(double(lo), y)) ++lo;
+    if (lo > i1) return;
+    int hi = i1;
+    while (hi > lo && !s.covers(double(hi), y)) --hi;
+    run(lo, hi);
+    return;
+  }
+  for (int i = i0; i <= i1;) {
+    if (!s.covers(double(i), y)) {
+      ++i;
+      continue;
+    }
+    const int lo = i;
+    while (i <= i1 && s.covers(double(i), y)) ++i;
+    run(lo, i - 1);
+  }
+}
+
+// Visits the covered samples of an m x m lattice row by row, as runs: run(j, span, lo, hi) for
+// each run of covered samples lo..hi of row j (span: the row's rounded boundary). Only rows
+// row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
+template <class RunFn>
+void for_each_covered_run(const CoverageSetup& s, int m, int row_lo, int row_hi, RunFn&& run) {
+  if (s.empty) return;
+  const int j0 = int(std::max(double(row_lo), std::ceil(s.ymin)));
+  const int j1 = int(std::min(double(row_hi), std::floor(s.ymax)));
+  for (int j = j0; j <= j1; ++j) {
+    RowSpan span;
+    int i0, i1;
+    if (!row_candidates(s, m, j, span, i0, i1)) continue;
+    covered_runs(s, j, i0, i1, [&](int lo, int hi) { run(j, span, lo, hi); });
+  }
+}
+
 // Visits every covered sample of an m x m lattice row by row: row(j, span) once per row that has
 // candidates, then sample(i, j) for each covered sample of that row.
 // Only rows row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
@@ -190,15 +246,12 @@ void for_each_covered_sample(const CoverageSetup& s, int m, int row_lo, int row_
   const int j1 = int(std::min(double(row_hi), std::floor(s.ymax)));
   for (int j = j0; j <= j1; ++j) {
     RowSpan span;
-    s.row_span(double(j), span.xl, span.xr, span.el, span.er);
-    if (!(span.xl <= span.xr)) continue;
-    // The rounded span is within far less than a sample of the exact one, so floor/ceil bound
-    // every sample the exact test can accept.
-    const int i0 = int(std::max(0.0, std::floor(span.xl)));
-    const int i1 = int(std::min(double(m - 1), std::ceil(span.xr)));
+    int i0, i1;
+    if (!row_candidates(s, m, j, span, i0, i1)) continue;
     row(j, span);
-    for (int i = i0; i <= i1; ++i)
-      if (s.covers(double(i), double(j))) sample(i, j);
+    covered_runs(s, j, i0, i1, [&](int lo, int hi) {
+      for (int i = lo; i <= hi; ++i) sample(i, j);
+    });
   }
 }
 

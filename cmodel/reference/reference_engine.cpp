@@ -40,8 +40,8 @@ class FloatEngine : public RasterEngine {
     check_split_frame(frame);
     ReferenceStats st;
     EngineRun run;
-    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_);
-    else run.out = render_reference(frame, st, visibility_, side_);
+    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_, options_.threads);
+    else run.out = render_reference(frame, st, visibility_, side_, options_.threads);
     run.report["engine"] = "float";
     run.report["snapped"] = options_.snap;
     run.report["visibility"] = visibility_ == Visibility::kPriority ? "priority" : "depth";

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/parallel.hpp"
 #include "common/timing.hpp"
 #include "reference/coverage.hpp"
 
@@ -24,6 +25,17 @@ struct DepthPlane {
   double x0, y0, w0, a, b;
   double w_lo = 0, w_hi = 0;
   double at(double x, double y) const { return std::clamp(w0 + a * (x - x0) + b * (y - y0), w_lo, w_hi); }
+  // An upper bound of at(x, y) over the samples xa <= x <= xb of row y. The plane is affine, so its
+  // exact maximum is at an end (va, vb are at() there before the clamp, the same operations); each
+  // evaluation as computed (a few roundings) lies within 4u of the magnitude sum `mag`, so the
+  // larger end plus 2^-48 mag (32u) bounds every sample, and clamp is monotone. A NaN (degenerate
+  // fit) bound compares false and rejects nothing.
+  double upper_bound(double xa, double xb, double y) const {
+    const double ey = b * (y - y0);
+    const double va = w0 + a * (xa - x0) + ey, vb = w0 + a * (xb - x0) + ey;
+    const double mag = std::abs(w0) + std::abs(a) * std::max(std::abs(xa - x0), std::abs(xb - x0)) + std::abs(ey);
+    return std::clamp(std::max(va, vb) + mag * 0x1p-48, w_lo, w_hi);
+  }
 };
 
 DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
@@ -94,6 +106,12 @@ constexpr double kDepthTie = 0x1p-30;
 // reused, so the work stays in cache and no full-screen sample buffer is ever allocated.
 constexpr int kStripPixels = 16;
 
+// Hidden samples are rejected by blocks of kBlockSamples samples of one sample row: each block
+// keeps a lower bound of its samples' w (the smallest, refreshed after writes, which only raise
+// w), so a polygon whose w over the block is at most that (with the tie margin) wins none of its
+// samples and skips them; under kPriority a block whose samples are all owned is skipped.
+constexpr int kBlockSamples = 16;
+
 // Bins items by the strips their sample-row range [lo, hi] touches (counting sort: flat arrays).
 struct StripBins {
   std::vector<std::uint32_t> first, items;
@@ -128,18 +146,18 @@ struct StripBins {
 namespace {
 
 RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
-                   Visibility visibility, int side);
+                   Visibility visibility, int side, int threads);
 
 }  // namespace
 
 RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Visibility visibility,
-                             int samples_per_side) {
-  return render(frame, frame, stats, visibility, samples_per_side);
+                             int samples_per_side, int threads) {
+  return render(frame, frame, stats, visibility, samples_per_side, threads);
 }
 
 RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility,
-                                     int samples_per_side) {
-  return render(snap_to_formatter_grid(exact), exact, stats, visibility, samples_per_side);
+                                     int samples_per_side, int threads) {
+  return render(snap_to_formatter_grid(exact), exact, stats, visibility, samples_per_side, threads);
 }
 
 namespace {
@@ -162,29 +180,47 @@ class ReferenceFrame {
     bin();
     set_up_polygons(depth_source);
     decide_light_visibility();
+    colour_.reserve(frame_.polygons.size());
+    for (const ScreenPolygon& p : frame_.polygons) colour_.push_back(p.colour);
+    double sum[3] = {0, 0, 0};
+    for (int s = 0; s < side * side; ++s) {
+      sum[0] += frame_.background.r;
+      sum[1] += frame_.background.g;
+      sum[2] += frame_.background.b;
+    }
+    store_pixel(sum, side * side, background_pixel_);
   }
 
-  RasterImage render() {
+  // The strips are independent once set up: `threads` workers take them in turn, each with its own
+  // sample buffers and counters (integer counts, so their sum is the same for any split).
+  RasterImage render(int threads) {
     const auto t0 = Clock::now();
-    double resolve_ms = 0;
     RasterImage out{Image(n_, n_), IdBuffer(n_, n_)};
-    const std::size_t strip_samples = std::size_t(m_) * std::size_t(strip_rows_);
-    depth_.resize(strip_samples);
-    owner_.resize(strip_samples);
-    intensity_.resize(strip_samples);
-    light_.resize(strip_samples);
-    for (int strip = 0; strip < strips_; ++strip) {
-      std::fill(depth_.begin(), depth_.end(), 0.0);
-      std::fill(owner_.begin(), owner_.end(), -1);
-      std::fill(light_.begin(), light_.end(), -1);
-      draw_polygons(strip);
-      draw_lights(strip);
+    const int workers = std::max(1, std::min(threads, strips_));
+    std::vector<StripWork> work(static_cast<std::size_t>(workers));
+    parallel_for(std::size_t(strips_), workers, [&](std::size_t strip, int worker) {
+      StripWork& w = work[std::size_t(worker)];
+      const auto t_strip = Clock::now();
+      clear(w);
+      draw_polygons(int(strip), w);
+      draw_lights(int(strip), w);
       const auto t_resolve = Clock::now();
-      resolve(strip, out);
-      resolve_ms += ms_since(t_resolve);
+      resolve(int(strip), w, out);
+      w.resolve_ms += ms_since(t_resolve);
+      w.busy_ms += ms_since(t_strip);
+    });
+    double busy_ms = 0, resolve_ms = 0;
+    for (const StripWork& w : work) {
+      stats_.samples_covered += w.samples_covered;
+      stats_.samples_written += w.samples_written;
+      stats_.light_samples += w.light_samples;
+      busy_ms += w.busy_ms;
+      resolve_ms += w.resolve_ms;
     }
-    stats_.resolve_ms += resolve_ms;
-    stats_.raster_ms += ms_since(t0) - resolve_ms;
+    // The resolve's share of the workers' time, applied to the wall time.
+    const double wall = ms_since(t0), resolve_share = busy_ms > 0 ? resolve_ms / busy_ms : 0.0;
+    stats_.resolve_ms += wall * resolve_share;
+    stats_.raster_ms += wall * (1 - resolve_share);
     return out;
   }
 
@@ -264,7 +300,103 @@ class ReferenceFrame {
     }
   }
 
-  void draw_polygons(int strip) {
+  // One worker's strip: sample buffers (reused from strip to strip, sized on first use) and counters.
+  struct StripWork {
+    std::vector<double> depth;  // w = 1/Z; 0 = nothing drawn (infinitely far)
+    std::vector<std::int32_t> owner;
+    std::vector<float> intensity;
+    std::vector<std::int32_t> light;
+    std::vector<double> block_w;             // per block of a sample row: a lower bound of its w
+    std::vector<std::uint16_t> block_owned;  // per block: samples owned (kPriority)
+    std::uint64_t samples_covered = 0, samples_written = 0, light_samples = 0;
+    double busy_ms = 0, resolve_ms = 0;
+  };
+
+  int blocks_per_row() const { return (m_ + kBlockSamples - 1) / kBlockSamples; }
+
+  void clear(StripWork& w) const {
+    const std::size_t samples = std::size_t(m_) * std::size_t(strip_rows_);
+    const std::size_t blocks = std::size_t(blocks_per_row()) * std::size_t(strip_rows_);
+    w.depth.assign(samples, 0.0);
+    w.owner.assign(samples, -1);
+    w.intensity.resize(samples);
+    w.light.assign(samples, -1);
+    w.block_w.assign(blocks, 0.0);
+    w.block_owned.assign(blocks, 0);
+  }
+
+  // Screen-door samples of run lo..hi of row j: all when opaque, else those with (i + j) even.
+  static std::uint64_t run_samples(bool opaque, int lo, int hi, int j) {
+    if (opaque) return std::uint64_t(hi - lo + 1);
+    const int first = lo + ((lo + j) & 1);  // the first i >= lo with (i + j) even
+    return first > hi ? 0 : std::uint64_t((hi - first) / 2 + 1);
+  }
+
+  // Intensity along a row: il + slope*(x - xl).
+  struct RowShade {
+    double il, slope, xl;
+    float at(int i) const { return float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0)); }
+  };
+
+  // Samples a..b of row j (one block) of polygon pi, each a z-buffer test and write. The block is
+  // skipped when none of its samples can be won (kBlockSamples above). Screen-door polygons
+  // visit every other sample, those with (i + j) even.
+  void draw_block_depth(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
+                        StripWork& w) const {
+    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
+    if (dp.upper_bound(a, b, j) <= w.block_w[blk] * (1 + kDepthTie)) return;
+    const bool opaque = frame_.polygons[pi].opaque;
+    const std::int32_t id = std::int32_t(pi);
+    const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
+    // Locals, so that the stores below cannot alias them: at() term by term, in its order.
+    const DepthPlane plane = dp;
+    const double ey = plane.b * (double(j) - plane.y0);
+    double* depth = w.depth.data() + row;
+    std::int32_t* owner = w.owner.data() + row;
+    float* intensity = w.intensity.data() + row;
+    std::uint64_t written = 0;
+    for (int i = opaque ? a : a + ((a + j) & 1); i <= b; i += opaque ? 1 : 2) {
+      const double z = std::clamp(plane.w0 + plane.a * (double(i) - plane.x0) + ey, plane.w_lo, plane.w_hi);
+      if (z > depth[i] * (1 + kDepthTie)) {
+        depth[i] = z;
+        owner[i] = id;
+        intensity[i] = shade.at(i);
+        ++written;
+      }
+    }
+    w.samples_written += written;
+    if (written) refresh_block(blk, row, w);
+  }
+
+  // The same under kPriority: polygons come in list order, so the first to cover a sample keeps it.
+  void draw_block_priority(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
+                           StripWork& w) const {
+    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
+    if (w.block_owned[blk] == block_width(a)) return;
+    const bool opaque = frame_.polygons[pi].opaque;
+    const std::int32_t id = std::int32_t(pi);
+    const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
+    for (int i = opaque ? a : a + ((a + j) & 1); i <= b; i += opaque ? 1 : 2) {
+      const std::size_t idx = row + std::size_t(i);
+      if (w.owner[idx] >= 0) continue;
+      ++w.block_owned[blk];
+      w.depth[idx] = dp.at(double(i), double(j));
+      w.owner[idx] = id;
+      w.intensity[idx] = shade.at(i);
+      ++w.samples_written;
+    }
+  }
+
+  int block_width(int a) const { return std::min(kBlockSamples, m_ - a / kBlockSamples * kBlockSamples); }
+
+  void refresh_block(std::size_t blk, std::size_t row, StripWork& w) const {
+    const int first = int(blk % std::size_t(blocks_per_row())) * kBlockSamples;
+    double lo = w.depth[row + std::size_t(first)];
+    for (int i = first + 1; i < first + block_width(first); ++i) lo = std::min(lo, w.depth[row + std::size_t(i)]);
+    w.block_w[blk] = lo;
+  }
+
+  void draw_polygons(int strip, StripWork& w) const {
     const int row0 = strip * strip_rows_, row1 = row0 + strip_rows_ - 1;
     for (std::uint32_t b = poly_bins_.first[std::size_t(strip)]; b < poly_bins_.first[std::size_t(strip) + 1]; ++b) {
       const std::size_t pi = poly_bins_.items[b];
@@ -272,34 +404,22 @@ class ReferenceFrame {
       const CoverageSetup& cov = coverage_[pi];
       if (cov.empty) continue;
       const DepthPlane& dp = depth_plane_[pi];
-      double il = 0, slope = 0, xl = 0;  // intensity along the current row: il + slope*(x - xl)
-      const std::int32_t id = std::int32_t(pi);
-      for_each_covered_sample(
-          cov, m_, row0, row1,
-          [&](int j, const RowSpan& s) {
-            il = edge_intensity(cov, p, s.el, double(j), s.xl);
-            const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
-            xl = s.xl;
-            slope = s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0;
-          },
-          [&](int i, int j) {
-            if (!screen_door_passes(p.opaque, i, j)) return;
-            ++stats_.samples_covered;
-            const std::size_t idx = std::size_t(j - row0) * std::size_t(m_) + std::size_t(i);
-            const double w = dp.at(double(i), double(j));
-            // Polygons come in list order, so under kPriority the first to cover a sample keeps it.
-            if (visibility_ == Visibility::kPriority ? owner_[idx] < 0 : w > depth_[idx] * (1 + kDepthTie)) {
-              depth_[idx] = w;
-              owner_[idx] = id;
-              intensity_[idx] = float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0));
-              ++stats_.samples_written;
-            }
-          });
+      for_each_covered_run(cov, m_, row0, row1, [&](int j, const RowSpan& s, int lo, int hi) {
+        const double il = edge_intensity(cov, p, s.el, double(j), s.xl);
+        const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
+        const RowShade shade{il, s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0, s.xl};
+        w.samples_covered += run_samples(p.opaque, lo, hi, j);
+        for (int a = lo; a <= hi; a = (a / kBlockSamples + 1) * kBlockSamples) {
+          const int b = std::min(hi, (a / kBlockSamples + 1) * kBlockSamples - 1);
+          if (visibility_ == Visibility::kPriority) draw_block_priority(pi, dp, a, b, j, row0, shade, w);
+          else draw_block_depth(pi, dp, a, b, j, row0, shade, w);
+        }
+      });
     }
   }
 
   // Visible light points over the polygons; a sample keeps the nearest light (ties: the later one).
-  void draw_lights(int strip) {
+  void draw_lights(int strip, StripWork& w) const {
     const int row0 = strip * strip_rows_, row1 = row0 + strip_rows_ - 1;
     for (std::uint32_t b = light_bins_.first[std::size_t(strip)]; b < light_bins_.first[std::size_t(strip) + 1]; ++b) {
       const std::size_t li = light_bins_.items[b];
@@ -317,58 +437,129 @@ class ReferenceFrame {
           const double dx = double(i) - cx, dy = double(j) - cy;
           if (dx * dx + dy * dy > r * r) continue;
           const std::size_t idx = std::size_t(j - row0) * std::size_t(m_) + std::size_t(i);
+          std::int32_t& held = w.light[idx];
           // kDepth: the nearest light keeps the sample (ties: the later one); kPriority: the light
           // earliest in the list (ties: the earlier light), as the engines' light point units.
-          if (light_[idx] >= 0 && (visibility_ == Visibility::kPriority
-                                       ? frame_.light_points[std::size_t(light_[idx])].priority <= l.priority
-                                       : wl < 1.0 / frame_.light_points[std::size_t(light_[idx])].zs))
+          if (held >= 0 &&
+              (visibility_ == Visibility::kPriority ? frame_.light_points[std::size_t(held)].priority <= l.priority
+                                                    : wl < 1.0 / frame_.light_points[std::size_t(held)].zs))
             continue;
-          if (light_[idx] < 0) ++stats_.light_samples;
-          light_[idx] = std::int32_t(li);
+          if (held < 0) ++w.light_samples;
+          held = std::int32_t(li);
         }
     }
   }
 
   // The colour of one sample after fog: a light, a polygon, or the background.
-  Rgb sample_colour(std::size_t idx) const {
+  Rgb sample_colour(const StripWork& w, std::size_t idx) const {
     const Fog& fog = frame_.fog;
-    const std::int32_t o = owner_[idx];
+    const std::int32_t o = w.owner[idx];
     // kPriority: a polygon earlier in the list than the light hides it at this sample.
-    const bool light_shows = light_[idx] >= 0 && (visibility_ == Visibility::kDepth || o < 0 ||
-                                                  o >= frame_.light_points[std::size_t(light_[idx])].priority);
+    const bool light_shows = w.light[idx] >= 0 && (visibility_ == Visibility::kDepth || o < 0 ||
+                                                   o >= frame_.light_points[std::size_t(w.light[idx])].priority);
     if (light_shows) {
-      const ScreenLightPoint& l = frame_.light_points[std::size_t(light_[idx])];
+      const ScreenLightPoint& l = frame_.light_points[std::size_t(w.light[idx])];
       const double f = fog_factor(fog, l.zs);
       return (1 - f) * l.intensity * l.colour + f * fog.colour;
     }
     if (o >= 0) {
-      const double f = fog_factor(fog, 1.0 / depth_[idx]);
-      return (1 - f) * double(intensity_[idx]) * frame_.polygons[std::size_t(o)].colour + f * fog.colour;
+      const double f = fog_factor(fog, 1.0 / w.depth[idx]);
+      return (1 - f) * double(w.intensity[idx]) * frame_.polygons[std::size_t(o)].colour + f * fog.colour;
     }
     return frame_.background;
   }
 
-  // Resolve the strip: box filter of the side x side samples of each pixel.
-  void resolve(int strip, RasterImage& out) const {
+  // Resolve the strip: box filter of the side x side samples of each pixel, summed in sample
+  // order. A pixel of background samples only (no polygon, no light) is background_pixel_.
+  void resolve(int strip, const StripWork& w, RasterImage& out) const {
     const int row0 = strip * strip_rows_, side = lattice_.side;
     std::int32_t ids[kMaxReferenceSamplesPerSide * kMaxReferenceSamplesPerSide];
+    // sample_colour's polygon case (no light) on operands held in locals: the same operations.
+    const std::int32_t* owner = w.owner.data();
+    const std::int32_t* light = w.light.data();
+    const double* depth = w.depth.data();
+    const float* intensity = w.intensity.data();
+    const Fog& fog = frame_.fog;
+    const double fog_start = fog.start, fog_span = fog.end - fog.start;
+    const Rgb fog_colour = fog.colour;
+    auto polygon_colour = [&](std::size_t idx, std::int32_t o) {
+      const double f = std::clamp((1.0 / depth[idx] - fog_start) / fog_span, 0.0, 1.0);  // fog_factor
+      return Rgb((1 - f) * double(intensity[idx]) * colour_[std::size_t(o)] + f * fog_colour);
+    };
     for (int py = strip * strip_pixels_; py < (strip + 1) * strip_pixels_; ++py)
       for (int px = 0; px < n_; ++px) {
+        const std::size_t first = std::size_t(py * side - row0) * std::size_t(m_) + std::size_t(px * side);
+        std::uint8_t* dst = out.image.at(px, py);
+        std::int32_t& id = out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)];
+        if (w.owner[first] < 0 && background_only(w, first)) {
+          std::copy(background_pixel_, background_pixel_ + 3, dst);
+          id = -1;
+          continue;
+        }
         double sum[3] = {0, 0, 0};
         int nid = 0;
+        bool one_owner = true;
         for (int sy = 0; sy < side; ++sy)
-          for (int sx = 0; sx < side; ++sx) {
-            const std::size_t idx = std::size_t(py * side + sy - row0) * std::size_t(m_) + std::size_t(px * side + sx);
-            ids[nid++] = owner_[idx];
-            const Rgb c = sample_colour(idx);
+          for (int sx = 0; sx < side; ++sx, ++nid) {
+            const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
+            const std::int32_t o = owner[idx];
+            ids[nid] = o;
+            one_owner = one_owner && o == ids[0];
+            const Rgb c = light[idx] < 0 && o >= 0 ? polygon_colour(idx, o) : sample_colour(w, idx);
             sum[0] += c.r;
             sum[1] += c.g;
             sum[2] += c.b;
           }
-        std::uint8_t* dst = out.image.at(px, py);
-        for (int k = 0; k < 3; ++k) dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / nid, 0.0, 1.0) * 255.0));
-        out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)] = majority_owner(ids, nid);
+        store_pixel(sum, nid, dst);
+        id = one_owner ? ids[0] : nid <= kSamplesPerPixel ? few_owners_majority(ids, nid) : majority_owner(ids, nid);
       }
+  }
+
+  // No polygon and no light on the pixel whose first sample is `first`.
+  bool background_only(const StripWork& w, std::size_t first) const {
+    for (int sy = 0; sy < lattice_.side; ++sy)
+      for (int sx = 0; sx < lattice_.side; ++sx) {
+        const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
+        if (w.owner[idx] >= 0 || w.light[idx] >= 0) return false;
+      }
+    return true;
+  }
+
+  static void store_pixel(const double* sum, int count, std::uint8_t* dst) {
+    for (int k = 0; k < 3; ++k) dst[k] = round_to_byte(std::clamp(sum[k] / count, 0.0, 1.0) * 255.0);
+  }
+
+  // std::lround of x in [0, 255] (half away from zero) without the library call: x - trunc(x) is
+  // exact there.
+  static std::uint8_t round_to_byte(double x) {
+    const int r = int(x);
+    return std::uint8_t(x - double(r) >= 0.5 ? r + 1 : r);
+  }
+
+  // majority_owner's rule (image/raster_image.hpp: the owner of most samples, ties to the earlier
+  // polygon, the background losing ties) by counting the few distinct owners, without the sort.
+  static std::int32_t few_owners_majority(const std::int32_t* ids, int count) {
+    std::int32_t owner[kSamplesPerPixel];
+    int n[kSamplesPerPixel], distinct = 0;
+    for (int s = 0; s < count; ++s) {
+      int d = 0;
+      while (d < distinct && owner[d] != ids[s]) ++d;
+      if (d == distinct) {
+        owner[distinct] = ids[s];
+        n[distinct++] = 0;
+      }
+      ++n[d];
+    }
+    std::int32_t best = -1;
+    int best_count = 0;
+    for (int d = 0; d < distinct; ++d) {
+      const bool earlier = owner[d] >= 0 && (best < 0 || owner[d] < best);
+      if (n[d] > best_count || (n[d] == best_count && earlier)) {
+        best = owner[d];
+        best_count = n[d];
+      }
+    }
+    return best;
   }
 
   const ScreenFrame& frame_;
@@ -380,16 +571,13 @@ class ReferenceFrame {
   std::vector<CoverageSetup> coverage_;
   std::vector<DepthPlane> depth_plane_;
   std::vector<char> light_visible_;
-  // The strip's sample buffers (reused from strip to strip).
-  std::vector<double> depth_;  // w = 1/Z; 0 = nothing drawn (infinitely far)
-  std::vector<std::int32_t> owner_;
-  std::vector<float> intensity_;
-  std::vector<std::int32_t> light_;
+  std::vector<Rgb> colour_;           // the polygons' colours, side by side
+  std::uint8_t background_pixel_[3];  // the resolve of side x side background samples
 };
 
 RasterImage render(const ScreenFrame& frame, const ScreenFrame& depth_source, ReferenceStats& stats,
-                   Visibility visibility, int side) {
-  return ReferenceFrame(frame, depth_source, stats, visibility, side).render();
+                   Visibility visibility, int side, int threads) {
+  return ReferenceFrame(frame, depth_source, stats, visibility, side).render(threads);
 }
 
 }  // namespace

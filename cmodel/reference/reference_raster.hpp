@@ -40,9 +40,10 @@ struct ReferenceStats {
 // engines' light point units). Fog uses the depth of the owning polygon either way.
 enum class Visibility { kDepth, kPriority };
 
-// samples_per_side: 4 (the engines' 4 x 4), or 1, 2, 8, 16 (sample_lattice.hpp).
+// samples_per_side: 4 (the engines' 4 x 4), or 1, 2, 8, 16 (sample_lattice.hpp). threads: workers
+// taking the image's strips of rows in turn (the same bits for any number).
 RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats,
-                             Visibility visibility = Visibility::kDepth, int samples_per_side = 4);
+                             Visibility visibility = Visibility::kDepth, int samples_per_side = 4, int threads = 1);
 
 // The snapped reference: coverage (and Gouraud) from the vertices snapped to the formatter grid,
 // depth from the exact vertices of `exact` (the same polygons unsnapped). Snapping X and Y while
@@ -50,6 +51,7 @@ RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats,
 // near-coplanar surfaces (a marking 5 cm above a runway) would z-fight; the depth of a point of a
 // polygon does not depend on where the formatter rounds its vertices.
 RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats,
-                                     Visibility visibility = Visibility::kDepth, int samples_per_side = 4);
+                                     Visibility visibility = Visibility::kDepth, int samples_per_side = 4,
+                                     int threads = 1);
 
 }  // namespace cig
