@@ -23,9 +23,11 @@ void RenderCommand::add_to(CLI::App& app) {
   sub->add_option("--channel", channel, "render only this channel")->check(CLI::Range(0, kMaxChannelIndex));
   sub->add_option("--out", out_dir, "output directory (default out)");
   sub->add_option("--report", report_file, "report file (default DIR/report.json)");
-  sub->add_option("--threads", threads,
-                  "worker threads: over channels, and those left over split each image into strips where the engine "
-                  "can (segment: the video channel's lines; float: strips of rows; same bits) (default: cores)")
+  sub->add_option(
+         "--threads", threads,
+         "worker threads: over channels, and those left over split each image into strips where the engine "
+         "can (segment: the video channel's lines; float: strips of rows; quadtree: the pixel colour work and the "
+         "resolve; same bits) (default: cores)")
       ->check(CLI::Range(1, 64));
   sub->add_option("--pipelines", pipelines,
                   "rendering pipelines per channel (seed 000's Nc): the channel's priority list split into N "
