@@ -114,7 +114,13 @@ struct DoubleSegmentArith {
   static double level_sample(double c) { return c; }
   static hls::UInt<8> resolve(const double (&s)[hls::kMaxSamplesPerPixel], int side_log2) {
     double sum = 0;
-    for (int k = 0; k < 1 << (2 * side_log2); ++k) sum += s[k];
+    for (int k = 0; k < 1 << (2 * side_log2); ++k) sum = box_add(sum, s[k]);
+    return resolve_sum(sum, side_log2);
+  }
+  // The same mean fed a sample at a time, in the same order.
+  using BoxAccum = double;
+  static double box_add(double sum, double s) { return sum + s; }
+  static hls::UInt<8> resolve_sum(double sum, int side_log2) {
     return hls::UInt<8>(int(std::lround(std::clamp(std::ldexp(sum, -2 * side_log2), 0.0, 255.0))));
   }
   static int first_column_at_or_after(const LatticeGeometry& g, double x) {

@@ -215,6 +215,10 @@ struct FixedSegmentArith {
   static Sample mix(const Sample& s, const Level& fog, const FogFactor& f) { return fog_mix(s, fog, f); }
   static Sample level_sample(const Level& c) { return ::cig::hls::level_sample(c); }
   static UInt<8> resolve(const Sample (&s)[kMaxSamplesPerPixel], int side_log2) { return resolve_box(s, side_log2); }
+  // The same box filter fed a sample at a time (the video channel's accumulator): resolve_box.
+  using BoxAccum = BoxSum;
+  static BoxAccum box_add(const BoxAccum& sum, const Sample& s) { return BoxAccum(sum + s); }
+  static UInt<8> resolve_sum(const BoxAccum& sum, int side_log2) { return resolve_box_sum(sum, side_log2); }
 
   // The video channel's sample columns: first column i with X_i >= x, and first with X_i >= x
   // (exclusive end for a right edge), where 2 X_i = (u/2) i + u/4 - 2 (half units).

@@ -6,6 +6,12 @@
 // segment, then fog by Z (interpolated along the segment, looked up in the fog table). The S x S
 // samples of a pixel are averaged (the anti-aliasing filter). The per-pixel polygon id is the
 // polygon owning most of the pixel's samples, light points aside (as in the float reference).
+//
+// The line buffer keeps, per sample row, two bit masks of 64-sample words beside the samples: the
+// samples owned (a colour written) and the samples settled (owned and their first polygon known,
+// which no later segment changes). A segment visits only the samples of its span that it can still
+// write: a word of the span at a time, masked by the screen door and the masks, and within a word
+// the set bits, lowest first (a priority encoder), so a covered run costs one step per word.
 #pragma once
 
 #include "hls/segment/y_sorter.hpp"
@@ -27,11 +33,18 @@ struct VideoTables {
   typename P::Level background[3];
 };
 
+constexpr int kMaskWordLog2 = 6;  // 64 samples per mask word
+constexpr int kMaskWordBits = 1 << kMaskWordLog2;
+constexpr int kLineMaskWords = kMaxLatticeSize / kMaskWordBits;
+using MaskWord = UInt<kMaskWordBits>;
+
 template <class P>
 struct LineBuffer {
   typename P::Sample rgb[kMaxRowsPerLine][kMaxLatticeSize][3];
   bool owned[kMaxRowsPerLine][kMaxLatticeSize];
-  int polygon[kMaxRowsPerLine][kMaxLatticeSize];  // first polygon covering the sample, -1 none
+  int polygon[kMaxRowsPerLine][kMaxLatticeSize];           // first polygon covering the sample, -1 none
+  MaskWord owned_mask[kMaxRowsPerLine][kLineMaskWords];    // bit i % 64 of word i / 64: owned[r][i]
+  MaskWord settled_mask[kMaxRowsPerLine][kLineMaskWords];  // owned and polygon[r][i] >= 0
 };
 
 struct PixelLine {
@@ -57,17 +70,80 @@ void plane_sample(const VideoTables<P>& t, int src, int i, int row, typename P::
   for (int c = 0; c < 3; ++c) rgb[c] = Plane::sample_colour(t.polygon_colour[src][c], in, f, t.fog_colour[c]);
 }
 
+// Sample i of sample row r (global row `row`) for segment s: its first polygon, then its colour
+// if no earlier segment owns it (visibility by priority).
+template <class P>
+struct SegmentSampler {
+  const Segment<P>& s;
+  const LatticeGeometry& g;
+  const VideoTables<P>& t;
+  int src;
+  bool planes;                 // I and 1/Z from the polygon's planes
+  typename P::X xlt;           // where il and zl hold (seed interpolation)
+  typename P::Reciprocal inv;  // 1 / span (seed interpolation)
+
+  void sample(int r, int row, int i, LineBuffer<P>& w) const {
+    if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
+    if (w.owned[r][i]) return;
+    w.owned[r][i] = true;
+    if (planes) {
+      plane_sample(t, src, i, row, w.rgb[r][i]);
+      return;
+    }
+    const typename P::Ratio along = P::ratio(typename P::X(P::column_x(g, i) - xlt), inv);
+    const typename P::Intensity in = P::lerp_intensity(s.il, s.ir, along);
+    const typename P::Depth z = P::lerp_depth(s.zl, s.zr, along);
+    const typename P::FogFactor f = P::fog_factor(t.fog, z);
+    for (int c = 0; c < 3; ++c) {
+      const typename P::Level colour = s.is_light ? t.light_colour[src][c] : t.polygon_colour[src][c];
+      w.rgb[r][i][c] = P::mix(P::shade(colour, in), t.fog_colour[c], f);
+    }
+  }
+};
+
+// Bits lo..hi (0 <= lo <= hi < 64) of a mask word.
+inline MaskWord mask_bits(int lo, int hi) {
+  const MaskWord all(~std::uint64_t{0});
+  return (all << lo) & (all >> (kMaskWordBits - 1 - hi));
+}
+
+// Samples i0..i1 of sample row r that segment s may still write: word by word, the span's bits
+// that the screen door leaves open and that no earlier segment settled (a polygon) or owned (a
+// light); within a word only the set bits, lowest first.
+template <class P>
+void draw_row(const SegmentSampler<P>& sm, int r, int row, int i0, int i1, LineBuffer<P>& w) {
+  // Screen door: samples with (i + row) even (a word starts at an even i).
+  const MaskWord door(sm.s.opaque ? ~std::uint64_t{0} : (row & 1) ? 0xAAAAAAAAAAAAAAAAull : 0x5555555555555555ull);
+  const int first = i0 >> kMaskWordLog2, last = i1 >> kMaskWordLog2;
+  for (int k = 0; k < kLineMaskWords; ++k) {
+    const int word = first + k;
+    if (word > last) break;
+    const int base = word << kMaskWordLog2;
+    const MaskWord span = mask_bits(word == first ? i0 - base : 0, word == last ? i1 - base : kMaskWordBits - 1);
+    const MaskWord closed = sm.s.is_light ? w.owned_mask[r][word] : w.settled_mask[r][word];
+    MaskWord todo = span & door & ~closed;
+    w.owned_mask[r][word] = w.owned_mask[r][word] | todo;
+    if (!sm.s.is_light) w.settled_mask[r][word] = w.settled_mask[r][word] | todo;
+    for (int b = 0; b < kMaskWordBits; ++b) {
+      if (todo.value() == 0) break;
+      const int bit = lowest_one(todo);
+      todo = todo & MaskWord(todo.value() - 1);  // clears the lowest set bit
+      sm.sample(r, row, base + bit, w);
+    }
+  }
+}
+
 template <class P>
 void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int cols, const VideoTables<P>& t,
                   LineBuffer<P>& w) {
   const int rf = int(s.row_first.value()), rl = int(s.row_last.value());
-  const int src = int(s.source.value());
   // Where il and zl (ir and zr) hold: the left (right) X at the centre of the covered rows.
   const typename P::X xlt = P::midpoint(s.xl[rf], s.xl[rl]);
   const typename P::X xrt = P::midpoint(s.xr[rf], s.xr[rl]);
   const bool planes = t.plane_mode && !s.is_light;  // I and 1/Z from the polygon's planes
   // The seed's interpolation along the segment: one reciprocal per segment (planes need none).
   const typename P::Reciprocal inv = planes ? typename P::Reciprocal() : P::reciprocal(typename P::X(xrt - xlt));
+  const SegmentSampler<P> sm{s, g, t, int(s.source.value()), planes, xlt, inv};
   for (int r = 0; r < kMaxRowsPerLine; ++r) {
     if (r >= g.side()) break;
     if (r < rf || r > rl) continue;
@@ -75,27 +151,8 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
     int i1 = P::first_column_at_or_after(g, s.xr[r]) - 1;  // right end exclusive
     if (i0 < 0) i0 = 0;
     if (i1 > cols - 1) i1 = cols - 1;
-    const int row = g.side() * line + r;
-    for (int k = 0; k < kMaxLatticeSize; ++k) {
-      const int i = i0 + k;
-      if (i > i1) break;
-      if (!s.opaque && ((i + row) & 1) != 0) continue;  // screen door, as the float reference
-      if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
-      if (w.owned[r][i]) continue;
-      w.owned[r][i] = true;
-      if (planes) {
-        plane_sample(t, src, i, row, w.rgb[r][i]);
-        continue;
-      }
-      const typename P::Ratio along = P::ratio(typename P::X(P::column_x(g, i) - xlt), inv);
-      const typename P::Intensity in = P::lerp_intensity(s.il, s.ir, along);
-      const typename P::Depth z = P::lerp_depth(s.zl, s.zr, along);
-      const typename P::FogFactor f = P::fog_factor(t.fog, z);
-      for (int c = 0; c < 3; ++c) {
-        const typename P::Level colour = s.is_light ? t.light_colour[src][c] : t.polygon_colour[src][c];
-        w.rgb[r][i][c] = P::mix(P::shade(colour, in), t.fog_colour[c], f);
-      }
-    }
+    if (i0 > i1) continue;
+    draw_row(sm, r, g.side() * line + r, i0, i1, w);
   }
 }
 
@@ -128,23 +185,25 @@ inline int majority_polygon(const int (&ids)[kMaxSamplesPerPixel], int count) {
   return best;
 }
 
-// Box filter and majority id of pixel px from the line buffer (S x S samples, S = g.side()).
+// Box filter and majority id of pixel px from the line buffer (S x S samples, S = g.side()): the
+// samples summed in row order as they are read (an accumulator per colour component).
 template <class P>
 void resolve_pixel(int px, const LatticeGeometry& g, const VideoTables<P>& t, const LineBuffer<P>& w, PixelLine& out) {
   const int side = g.side();
-  typename P::Sample s[3][kMaxSamplesPerPixel];
+  typename P::BoxAccum sum[3] = {};
+  typename P::Sample background[3];
+  for (int c = 0; c < 3; ++c) background[c] = P::level_sample(t.background[c]);
   int ids[kMaxSamplesPerPixel];
   for (int r = 0; r < kMaxRowsPerLine; ++r) {
     if (r >= side) break;
     for (int q = 0; q < kMaxRowsPerLine; ++q) {
       if (q >= side) break;
       const int i = side * px + q;
-      for (int c = 0; c < 3; ++c)
-        s[c][side * r + q] = w.owned[r][i] ? w.rgb[r][i][c] : P::level_sample(t.background[c]);
+      for (int c = 0; c < 3; ++c) sum[c] = P::box_add(sum[c], w.owned[r][i] ? w.rgb[r][i][c] : background[c]);
       ids[side * r + q] = w.polygon[r][i];
     }
   }
-  for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve(s[c], g.side_log2);
+  for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve_sum(sum[c], g.side_log2);
   out.id[px] = majority_polygon(ids, side * side);
 }
 
@@ -157,6 +216,11 @@ void clear_line_buffer(const LatticeGeometry& g, int cols, LineBuffer<P>& w) {
       if (i >= cols) break;
       w.owned[r][i] = false;
       w.polygon[r][i] = -1;
+    }
+    for (int k = 0; k < kLineMaskWords; ++k) {
+      if (k << kMaskWordLog2 >= cols) break;
+      w.owned_mask[r][k] = MaskWord(0);
+      w.settled_mask[r][k] = MaskWord(0);
     }
   }
 }

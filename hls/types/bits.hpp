@@ -13,7 +13,12 @@
 //  * Division: div_trunc(a, b) is C++'s quotient (toward zero); the kernels guard b != 0.
 //
 // Representation: plain 64-bit integers, kept sign- or zero-extended from bit W-1, so each
-// operation is one or two machine instructions. Built with -DCIG_HLS_SYSTEMC the storage is
+// operation is one or two machine instructions. An operation whose result provably fits its
+// width (every exact operation above, widening, wrap to a width at least as wide) stores the
+// machine result as it is (exact()); only a narrowing (construction from a C++ integer, wrap<V>,
+// saturate<V>, a run-time left shift) re-extends, with two shifts or one mask. So a chain of
+// operations compiles to the same instructions as hand-written integer code
+// (verif/bench/bench_types.cpp measures it). Built with -DCIG_HLS_SYSTEMC the storage is
 // SystemC's sc_dt::sc_int<W> / sc_uint<W> instead (Debian's libsystemc-dev), and every value
 // passes through SystemC's own W-bit truncation; the kernel tests run in both configurations
 // and must produce identical bits.
@@ -29,6 +34,14 @@
 #define CIG_HLS_CONSTEXPR
 #else
 #define CIG_HLS_CONSTEXPR constexpr
+#endif
+
+// The type layer's one-instruction operations are always inlined (an optimiser that keeps one as a
+// call costs more than the operation); the synthesis build sees plain functions.
+#if defined(__GNUC__) && !defined(__SYNTHESIS__)
+#define CIG_HLS_INLINE __attribute__((always_inline)) inline
+#else
+#define CIG_HLS_INLINE inline
 #endif
 
 CIG_HLS_BEGIN_NAMESPACE
@@ -53,13 +66,15 @@ template <int W>
 struct SignedStore {
   sc_dt::sc_int<W> s;
   std::int64_t get() const { return s.to_int64(); }
-  void set(std::int64_t v) { s = v; }  // SystemC truncates to W bits
+  void set(std::int64_t v) { s = v; }        // SystemC truncates to W bits
+  void set_exact(std::int64_t v) { s = v; }  // ... here too: every value passes through SystemC
 };
 template <int W>
 struct UnsignedStore {
   sc_dt::sc_uint<W> s;
   std::uint64_t get() const { return s.to_uint64(); }
   void set(std::uint64_t v) { s = v; }
+  void set_exact(std::uint64_t v) { s = v; }
 };
 #else
 template <int W>
@@ -67,14 +82,19 @@ struct SignedStore {
   std::int64_t v = 0;
   constexpr std::int64_t get() const { return v; }
   constexpr void set(std::int64_t x) { v = wrap_signed(x, W); }
+  constexpr void set_exact(std::int64_t x) { v = x; }  // x already sign-extended from bit W-1
 };
 template <int W>
 struct UnsignedStore {
   std::uint64_t v = 0;
   constexpr std::uint64_t get() const { return v; }
   constexpr void set(std::uint64_t x) { v = wrap_unsigned(x, W); }
+  constexpr void set_exact(std::uint64_t x) { v = x; }  // x already below 2^W
 };
 #endif
+
+// Tag of the constructors that store a value known to fit (no re-extension).
+struct ExactTag {};
 
 }  // namespace detail
 
@@ -90,23 +110,26 @@ class Int {
   static constexpr std::int64_t min_value = detail::signed_min(W);
   static constexpr std::int64_t max_value = detail::signed_max(W);
 
-  CIG_HLS_CONSTEXPR Int() { s_.set(0); }
+  CIG_HLS_CONSTEXPR Int() = default;  // zero
   // From a C++ integer: keeps the low W bits (wrap).
   template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
-  CIG_HLS_CONSTEXPR explicit Int(T x) {
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit Int(T x) {
     s_.set(static_cast<std::int64_t>(x));
   }
   // Widening from a narrower Int or UInt is exact, hence implicit.
   template <int V, class = std::enable_if_t<(V <= W)>>
-  CIG_HLS_CONSTEXPR Int(const Int<V>& x) {
-    s_.set(x.value());
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int(const Int<V>& x) {
+    s_.set_exact(x.value());
   }
   template <int V, class = std::enable_if_t<(V < W)>>
-  CIG_HLS_CONSTEXPR Int(const UInt<V>& x) {
-    s_.set(static_cast<std::int64_t>(x.value()));
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int(const UInt<V>& x) {
+    s_.set_exact(static_cast<std::int64_t>(x.value()));
   }
+  // A value the caller knows to lie in W bits (the result of an exact operation).
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int(detail::ExactTag, std::int64_t x) { s_.set_exact(x); }
+  static CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int exact(std::int64_t x) { return Int(detail::ExactTag{}, x); }
 
-  CIG_HLS_CONSTEXPR std::int64_t value() const { return s_.get(); }
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::int64_t value() const { return s_.get(); }
   CIG_HLS_CONSTEXPR bool bit(int i) const { return (static_cast<std::uint64_t>(value()) >> i) & 1u; }
   CIG_HLS_CONSTEXPR bool is_negative() const { return value() < 0; }
   // Bits [Hi:Lo] as an unsigned field.
@@ -125,22 +148,25 @@ class UInt {
   static constexpr int width = W;
   static constexpr std::uint64_t max_value = detail::unsigned_max(W);
 
-  CIG_HLS_CONSTEXPR UInt() { s_.set(0); }
+  CIG_HLS_CONSTEXPR UInt() = default;  // zero
   template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
-  CIG_HLS_CONSTEXPR explicit UInt(T x) {
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit UInt(T x) {
     s_.set(static_cast<std::uint64_t>(x));
   }
   template <int V, class = std::enable_if_t<(V <= W)>>
-  CIG_HLS_CONSTEXPR UInt(const UInt<V>& x) {
-    s_.set(x.value());
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt(const UInt<V>& x) {
+    s_.set_exact(x.value());
   }
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt(detail::ExactTag, std::uint64_t x) { s_.set_exact(x); }
+  static CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt exact(std::uint64_t x) { return UInt(detail::ExactTag{}, x); }
 
-  CIG_HLS_CONSTEXPR std::uint64_t value() const { return s_.get(); }
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::uint64_t value() const { return s_.get(); }
   CIG_HLS_CONSTEXPR bool bit(int i) const { return (value() >> i) & 1u; }
   template <int Hi, int Lo>
   CIG_HLS_CONSTEXPR UInt<Hi - Lo + 1> slice() const {
     static_assert(Lo >= 0 && Hi >= Lo && Hi < W, "slice<Hi, Lo> out of range");
-    return UInt<Hi - Lo + 1>(value() >> Lo);
+    if constexpr (Hi == W - 1) return UInt<Hi - Lo + 1>::exact(value() >> Lo);  // the top bits
+    else return UInt<Hi - Lo + 1>(value() >> Lo);
   }
   // Sets bit i to b (returns the new value; the type is a value type).
   CIG_HLS_CONSTEXPR UInt with_bit(int i, bool b) const {
@@ -169,114 +195,124 @@ struct is_hls_int<UInt<W>> : std::true_type {};
 
 // ---- Narrowing ---------------------------------------------------------------------------------
 
-// Low V bits (two's complement wrap).
+// Low V bits (two's complement wrap); a width at least as wide keeps the value as it is.
 template <int V, int W>
-CIG_HLS_CONSTEXPR Int<V> wrap(const Int<W>& x) {
-  return Int<V>(x.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<V> wrap(const Int<W>& x) {
+  if constexpr (V >= W) return Int<V>::exact(x.value());
+  else return Int<V>(x.value());
 }
 template <int V, int W>
-CIG_HLS_CONSTEXPR Int<V> wrap(const UInt<W>& x) {
-  return Int<V>(x.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<V> wrap(const UInt<W>& x) {
+  if constexpr (V > W) return Int<V>::exact(static_cast<std::int64_t>(x.value()));
+  else return Int<V>(x.value());
 }
 template <int V, int W>
-CIG_HLS_CONSTEXPR UInt<V> wrap_unsigned(const Int<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> wrap_unsigned(const Int<W>& x) {
   return UInt<V>(x.value());
 }
 template <int V, int W>
-CIG_HLS_CONSTEXPR UInt<V> wrap_unsigned(const UInt<W>& x) {
-  return UInt<V>(x.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> wrap_unsigned(const UInt<W>& x) {
+  if constexpr (V >= W) return UInt<V>::exact(x.value());
+  else return UInt<V>(x.value());
 }
 
 // Clamped to the range of V bits.
 template <int V, int W>
-CIG_HLS_CONSTEXPR Int<V> saturate(const Int<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<V> saturate(const Int<W>& x) {
   const std::int64_t v = x.value();
-  return Int<V>(v < Int<V>::min_value ? Int<V>::min_value : v > Int<V>::max_value ? Int<V>::max_value : v);
+  if constexpr (V >= W) return Int<V>::exact(v);
+  else return Int<V>::exact(v < Int<V>::min_value ? Int<V>::min_value : v > Int<V>::max_value ? Int<V>::max_value : v);
 }
 template <int V, int W>
-CIG_HLS_CONSTEXPR UInt<V> saturate_unsigned(const Int<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> saturate_unsigned(const Int<W>& x) {
   const std::int64_t v = x.value();
-  return UInt<V>(v < 0                                                ? 0
-                 : static_cast<std::uint64_t>(v) > UInt<V>::max_value ? UInt<V>::max_value
-                                                                      : static_cast<std::uint64_t>(v));
+  if constexpr (V >= W - 1) return UInt<V>::exact(v < 0 ? 0 : static_cast<std::uint64_t>(v));
+  else
+    return UInt<V>::exact(v < 0                                                ? 0
+                          : static_cast<std::uint64_t>(v) > UInt<V>::max_value ? UInt<V>::max_value
+                                                                               : static_cast<std::uint64_t>(v));
 }
 template <int V, int W>
-CIG_HLS_CONSTEXPR UInt<V> saturate_unsigned(const UInt<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> saturate_unsigned(const UInt<W>& x) {
   const std::uint64_t v = x.value();
-  return UInt<V>(v > UInt<V>::max_value ? UInt<V>::max_value : v);
+  if constexpr (V >= W) return UInt<V>::exact(v);
+  else return UInt<V>::exact(v > UInt<V>::max_value ? UInt<V>::max_value : v);
 }
 
 // Reinterpretation of the same W bits.
 template <int W>
-CIG_HLS_CONSTEXPR Int<W> as_signed(const UInt<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<W> as_signed(const UInt<W>& x) {
   return Int<W>(x.value());
 }
 template <int W>
-CIG_HLS_CONSTEXPR UInt<W> as_unsigned(const Int<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<W> as_unsigned(const Int<W>& x) {
   return UInt<W>(x.value());
 }
 
 // Exact conversion of an unsigned value to signed (one more bit).
 template <int W>
-CIG_HLS_CONSTEXPR Int<W + 1> to_signed(const UInt<W>& x) {
-  return Int<W + 1>(x.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<W + 1> to_signed(const UInt<W>& x) {
+  return Int<W + 1>::exact(static_cast<std::int64_t>(x.value()));
 }
 
 // ---- Arithmetic (exact: the result is wide enough) -----------------------------------------------
+// Operands are sign- (zero-) extended from their widths, so the machine result already lies in
+// the result's width: stored as it is.
 
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<detail::max_width(A, B) + 1> operator+(const Int<A>& a, const Int<B>& b) {
-  return Int<detail::max_width(A, B) + 1>(a.value() + b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B) + 1> operator+(const Int<A>& a, const Int<B>& b) {
+  return Int<detail::max_width(A, B) + 1>::exact(a.value() + b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<detail::max_width(A, B) + 1> operator-(const Int<A>& a, const Int<B>& b) {
-  return Int<detail::max_width(A, B) + 1>(a.value() - b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B) + 1> operator-(const Int<A>& a, const Int<B>& b) {
+  return Int<detail::max_width(A, B) + 1>::exact(a.value() - b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<A + B> operator*(const Int<A>& a, const Int<B>& b) {
-  return Int<A + B>(a.value() * b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<A + B> operator*(const Int<A>& a, const Int<B>& b) {
+  return Int<A + B>::exact(a.value() * b.value());
 }
 template <int A>
-CIG_HLS_CONSTEXPR Int<A + 1> operator-(const Int<A>& a) {
-  return Int<A + 1>(-a.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<A + 1> operator-(const Int<A>& a) {
+  return Int<A + 1>::exact(-a.value());
 }
 
 template <int A, int B>
-CIG_HLS_CONSTEXPR UInt<detail::max_width(A, B) + 1> operator+(const UInt<A>& a, const UInt<B>& b) {
-  return UInt<detail::max_width(A, B) + 1>(a.value() + b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<detail::max_width(A, B) + 1> operator+(const UInt<A>& a, const UInt<B>& b) {
+  return UInt<detail::max_width(A, B) + 1>::exact(a.value() + b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<detail::max_width(A, B) + 1> operator-(const UInt<A>& a, const UInt<B>& b) {
-  return Int<detail::max_width(A, B) + 1>(static_cast<std::int64_t>(a.value()) - static_cast<std::int64_t>(b.value()));
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B) + 1> operator-(const UInt<A>& a, const UInt<B>& b) {
+  return Int<detail::max_width(A, B) + 1>::exact(static_cast<std::int64_t>(a.value()) -
+                                                 static_cast<std::int64_t>(b.value()));
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR UInt<A + B> operator*(const UInt<A>& a, const UInt<B>& b) {
-  return UInt<A + B>(a.value() * b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<A + B> operator*(const UInt<A>& a, const UInt<B>& b) {
+  return UInt<A + B>::exact(a.value() * b.value());
 }
 
 // Mixed signed/unsigned: the unsigned operand is first made signed (exactly, one more bit).
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator+(const Int<A>& a, const UInt<B>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator+(const Int<A>& a, const UInt<B>& b) {
   return a + to_signed(b);
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator+(const UInt<A>& a, const Int<B>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator+(const UInt<A>& a, const Int<B>& b) {
   return to_signed(a) + b;
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator-(const Int<A>& a, const UInt<B>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator-(const Int<A>& a, const UInt<B>& b) {
   return a - to_signed(b);
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator-(const UInt<A>& a, const Int<B>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator-(const UInt<A>& a, const Int<B>& b) {
   return to_signed(a) - b;
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator*(const Int<A>& a, const UInt<B>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator*(const Int<A>& a, const UInt<B>& b) {
   return a * to_signed(b);
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR auto operator*(const UInt<A>& a, const Int<B>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator*(const UInt<A>& a, const Int<B>& b) {
   return to_signed(a) * b;
 }
 
@@ -287,129 +323,158 @@ CIG_HLS_CONSTEXPR Int<(A < 64 ? A + 1 : 64)> div_trunc(const Int<A>& a, const In
 }
 template <int A, int B>
 CIG_HLS_CONSTEXPR UInt<A> div_trunc(const UInt<A>& a, const UInt<B>& b) {
-  return UInt<A>(b.value() == 0 ? 0 : a.value() / b.value());
+  return UInt<A>::exact(b.value() == 0 ? 0 : a.value() / b.value());
 }
 
 // ---- Shifts ---------------------------------------------------------------------------------------
 
 template <int K, int W>
-CIG_HLS_CONSTEXPR Int<W + K> shl(const Int<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<W + K> shl(const Int<W>& x) {
   static_assert(K >= 0, "shl<K>: K >= 0");
-  return Int<W + K>(static_cast<std::int64_t>(static_cast<std::uint64_t>(x.value()) << K));
+  return Int<W + K>::exact(static_cast<std::int64_t>(static_cast<std::uint64_t>(x.value()) << K));
 }
 template <int K, int W>
-CIG_HLS_CONSTEXPR UInt<W + K> shl(const UInt<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<W + K> shl(const UInt<W>& x) {
   static_assert(K >= 0, "shl<K>: K >= 0");
-  return UInt<W + K>(x.value() << K);
+  return UInt<W + K>::exact(x.value() << K);
 }
 // Exact right shift by a constant: drops K low bits (floor), narrows the type.
 template <int K, int W>
-CIG_HLS_CONSTEXPR Int<(W - K > 0 ? W - K : 1)> shr(const Int<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<(W - K > 0 ? W - K : 1)> shr(const Int<W>& x) {
   static_assert(K >= 0 && K < 64, "shr<K>: 0 <= K < 64");
-  return Int<(W - K > 0 ? W - K : 1)>(x.value() >> K);
+  return Int<(W - K > 0 ? W - K : 1)>::exact(x.value() >> K);
 }
 template <int K, int W>
-CIG_HLS_CONSTEXPR UInt<(W - K > 0 ? W - K : 1)> shr(const UInt<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<(W - K > 0 ? W - K : 1)> shr(const UInt<W>& x) {
   static_assert(K >= 0 && K < 64, "shr<K>: 0 <= K < 64");
-  return UInt<(W - K > 0 ? W - K : 1)>(x.value() >> K);
+  return UInt<(W - K > 0 ? W - K : 1)>::exact(x.value() >> K);
 }
 // Run-time shifts keep the width (a barrel shifter): left wraps, right is arithmetic/logical.
 template <int W>
-CIG_HLS_CONSTEXPR Int<W> operator<<(const Int<W>& x, int n) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<W> operator<<(const Int<W>& x, int n) {
   return Int<W>(static_cast<std::int64_t>(static_cast<std::uint64_t>(x.value()) << n));
 }
 template <int W>
-CIG_HLS_CONSTEXPR Int<W> operator>>(const Int<W>& x, int n) {
-  return Int<W>(x.value() >> n);
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<W> operator>>(const Int<W>& x, int n) {
+  return Int<W>::exact(x.value() >> n);
 }
 template <int W>
-CIG_HLS_CONSTEXPR UInt<W> operator<<(const UInt<W>& x, int n) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<W> operator<<(const UInt<W>& x, int n) {
   return UInt<W>(x.value() << n);
 }
 template <int W>
-CIG_HLS_CONSTEXPR UInt<W> operator>>(const UInt<W>& x, int n) {
-  return UInt<W>(x.value() >> n);
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<W> operator>>(const UInt<W>& x, int n) {
+  return UInt<W>::exact(x.value() >> n);
 }
 
 // ---- Bitwise (same signedness; the wider width) ------------------------------------------------------
+// Of two values extended from their widths, the result is extended from the wider: stored as it is.
 
 template <int A, int B>
-CIG_HLS_CONSTEXPR UInt<detail::max_width(A, B)> operator&(const UInt<A>& a, const UInt<B>& b) {
-  return UInt<detail::max_width(A, B)>(a.value() & b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<detail::max_width(A, B)> operator&(const UInt<A>& a, const UInt<B>& b) {
+  return UInt<detail::max_width(A, B)>::exact(a.value() & b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR UInt<detail::max_width(A, B)> operator|(const UInt<A>& a, const UInt<B>& b) {
-  return UInt<detail::max_width(A, B)>(a.value() | b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<detail::max_width(A, B)> operator|(const UInt<A>& a, const UInt<B>& b) {
+  return UInt<detail::max_width(A, B)>::exact(a.value() | b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR UInt<detail::max_width(A, B)> operator^(const UInt<A>& a, const UInt<B>& b) {
-  return UInt<detail::max_width(A, B)>(a.value() ^ b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<detail::max_width(A, B)> operator^(const UInt<A>& a, const UInt<B>& b) {
+  return UInt<detail::max_width(A, B)>::exact(a.value() ^ b.value());
 }
 template <int A>
-CIG_HLS_CONSTEXPR UInt<A> operator~(const UInt<A>& a) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<A> operator~(const UInt<A>& a) {
   return UInt<A>(~a.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<detail::max_width(A, B)> operator&(const Int<A>& a, const Int<B>& b) {
-  return Int<detail::max_width(A, B)>(a.value() & b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B)> operator&(const Int<A>& a, const Int<B>& b) {
+  return Int<detail::max_width(A, B)>::exact(a.value() & b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<detail::max_width(A, B)> operator|(const Int<A>& a, const Int<B>& b) {
-  return Int<detail::max_width(A, B)>(a.value() | b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B)> operator|(const Int<A>& a, const Int<B>& b) {
+  return Int<detail::max_width(A, B)>::exact(a.value() | b.value());
 }
 template <int A, int B>
-CIG_HLS_CONSTEXPR Int<detail::max_width(A, B)> operator^(const Int<A>& a, const Int<B>& b) {
-  return Int<detail::max_width(A, B)>(a.value() ^ b.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B)> operator^(const Int<A>& a, const Int<B>& b) {
+  return Int<detail::max_width(A, B)>::exact(a.value() ^ b.value());
 }
 
 // ---- Comparisons (any widths, any signedness: compared as mathematical integers) ---------------------
 
 namespace detail {
+// a < b and a == b as mathematical integers. Unsigned values of 64 bits may exceed int64, so a
+// signed and an unsigned operand compare through the sign first; any narrower unsigned value
+// fits int64 and compares directly.
 template <class A, class B>
-CIG_HLS_CONSTEXPR int compare3(const A& a, const B& b) {
-  // Unsigned values of 64 bits may exceed int64; compare through the sign first.
-  if constexpr (std::is_same_v<decltype(a.value()), std::int64_t> &&
-                std::is_same_v<decltype(b.value()), std::int64_t>) {
-    return a.value() < b.value() ? -1 : a.value() > b.value() ? 1 : 0;
-  } else if constexpr (std::is_same_v<decltype(a.value()), std::uint64_t> &&
-                       std::is_same_v<decltype(b.value()), std::uint64_t>) {
-    return a.value() < b.value() ? -1 : a.value() > b.value() ? 1 : 0;
-  } else if constexpr (std::is_same_v<decltype(a.value()), std::int64_t>) {
-    if (a.value() < 0) return -1;
-    const std::uint64_t ua = static_cast<std::uint64_t>(a.value());
-    return ua < b.value() ? -1 : ua > b.value() ? 1 : 0;
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool less(const A& a, const B& b) {
+  using Va = decltype(a.value());
+  using Vb = decltype(b.value());
+  if constexpr (std::is_same_v<Va, Vb>) {
+    return a.value() < b.value();
+  } else if constexpr (std::is_same_v<Va, std::int64_t>) {
+    if constexpr (B::width < 64) return a.value() < static_cast<std::int64_t>(b.value());
+    else return a.value() < 0 || static_cast<std::uint64_t>(a.value()) < b.value();
   } else {
-    return -compare3(b, a);
+    if constexpr (A::width < 64) return static_cast<std::int64_t>(a.value()) < b.value();
+    else return !(b.value() < 0 || static_cast<std::uint64_t>(b.value()) <= a.value());
+  }
+}
+template <class A, class B>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool equal(const A& a, const B& b) {
+  using Va = decltype(a.value());
+  using Vb = decltype(b.value());
+  if constexpr (std::is_same_v<Va, Vb>) {
+    return a.value() == b.value();
+  } else if constexpr (std::is_same_v<Va, std::int64_t>) {
+    return a.value() >= 0 && static_cast<std::uint64_t>(a.value()) == b.value();
+  } else {
+    return b.value() >= 0 && static_cast<std::uint64_t>(b.value()) == a.value();
   }
 }
 }  // namespace detail
 
-#define CIG_HLS_COMPARE(op)                                                                           \
-  template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>> \
-  CIG_HLS_CONSTEXPR bool operator op(const A& a, const B& b) {                                        \
-    return detail::compare3(a, b) op 0;                                                               \
-  }
-CIG_HLS_COMPARE(==)
-CIG_HLS_COMPARE(!=)
-CIG_HLS_COMPARE(<)
-CIG_HLS_COMPARE(<=)
-CIG_HLS_COMPARE(>)
-CIG_HLS_COMPARE(>=)
-#undef CIG_HLS_COMPARE
+template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator==(const A& a, const B& b) {
+  return detail::equal(a, b);
+}
+template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator!=(const A& a, const B& b) {
+  return !detail::equal(a, b);
+}
+template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator<(const A& a, const B& b) {
+  return detail::less(a, b);
+}
+template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator<=(const A& a, const B& b) {
+  return !detail::less(b, a);
+}
+template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator>(const A& a, const B& b) {
+  return detail::less(b, a);
+}
+template <class A, class B, class = std::enable_if_t<is_hls_int<A>::value && is_hls_int<B>::value>>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator>=(const A& a, const B& b) {
+  return !detail::less(a, b);
+}
 
 // ---- Small helpers kernels use often ---------------------------------------------------------------
 
 template <int W>
-CIG_HLS_CONSTEXPR Int<W + 1> abs_value(const Int<W>& x) {
-  return Int<W + 1>(x.value() < 0 ? -x.value() : x.value());
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<W + 1> abs_value(const Int<W>& x) {
+  return Int<W + 1>::exact(x.value() < 0 ? -x.value() : x.value());
 }
 
 // Position of the most significant set bit (floor(log2(x))), -1 for zero: a priority encoder,
-// written as a binary search (log2(W) steps) rather than a scan over every bit.
+// written as a binary search (log2(W) steps) rather than a scan over every bit. The C model's
+// native build takes the processor's count of leading zeros instead (the same result).
 template <int W>
-CIG_HLS_CONSTEXPR int leading_one(const UInt<W>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE int leading_one(const UInt<W>& x) {
   std::uint64_t v = x.value();
   if (v == 0) return -1;
+#if defined(__GNUC__) && !defined(__SYNTHESIS__)
+  return 63 - __builtin_clzll(v);
+#else
   int pos = 0;
   for (int step = 32; step > 0; step >>= 1) {
     if (v >> step) {
@@ -418,14 +483,34 @@ CIG_HLS_CONSTEXPR int leading_one(const UInt<W>& x) {
     }
   }
   return pos;
+#endif
+}
+
+// Position of the least significant set bit, -1 for zero (the priority encoder from the other end).
+template <int W>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE int lowest_one(const UInt<W>& x) {
+  std::uint64_t v = x.value();
+  if (v == 0) return -1;
+#if defined(__GNUC__) && !defined(__SYNTHESIS__)
+  return __builtin_ctzll(v);
+#else
+  int pos = 0;
+  for (int step = 32; step > 0; step >>= 1) {
+    if ((v & ((std::uint64_t{1} << step) - 1)) == 0) {
+      v >>= step;
+      pos += step;
+    }
+  }
+  return pos;
+#endif
 }
 
 template <class T>
-CIG_HLS_CONSTEXPR T min_of(const T& a, const T& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE T min_of(const T& a, const T& b) {
   return b < a ? b : a;
 }
 template <class T>
-CIG_HLS_CONSTEXPR T max_of(const T& a, const T& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE T max_of(const T& a, const T& b) {
   return a < b ? b : a;
 }
 

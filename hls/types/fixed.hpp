@@ -57,6 +57,49 @@ CIG_HLS_CONSTEXPR inline std::uint64_t overflow_unsigned(std::int64_t v, int w, 
   return static_cast<std::uint64_t>(v) > unsigned_max(w) ? unsigned_max(w) : static_cast<std::uint64_t>(v);
 }
 
+// The conversion of a raw value of format Src (signed or not, Src::width bits, Src::frac_bits) to
+// To fractional bits with quantization Q, with everything known at compile time: requantize()
+// unrolled to the one shift (and add) it is. Rounding half up adds half an LSB before the floor
+// shift where that sum cannot leave 64 bits; the same value as floor_q + (rem >= half).
+template <class Src, int To, Quant Q>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::int64_t requantize_to(std::int64_t raw) {
+  constexpr int from = Src::frac_bits;
+  if constexpr (To >= from) {
+    return shift_left(raw, To - from);
+  } else if constexpr (from - To >= 63 || Src::width >= 63 || Q == Quant::kRoundEven) {
+    return requantize(raw, from, To, Q);
+  } else if constexpr (Q == Quant::kTrunc) {
+    return raw >> (from - To);
+  } else {
+    return (raw + (std::int64_t{1} << (from - To - 1))) >> (from - To);
+  }
+}
+
+// Bits a value of format Src needs (sign included for a signed target) after requantize_to<To, Q>:
+// a left shift adds its bits, a floor right shift removes them, rounding may carry into one more.
+template <class Src, int To, Quant Q, bool kSignedTarget>
+constexpr int requantized_bits() {
+  constexpr int w = Src::width + ((kSignedTarget && !Src::is_signed) ? 1 : 0);
+  constexpr int shifted = To >= Src::frac_bits ? w + (To - Src::frac_bits) : w - (Src::frac_bits - To);
+  constexpr int carried = (To < Src::frac_bits && Q != Quant::kTrunc) ? shifted + 1 : shifted;
+  return carried < 1 ? 1 : carried;
+}
+
+// The overflow rule O into W bits, skipped where the source format cannot overflow W bits (the
+// rule would leave every value as it is).
+template <class Src, int To, Quant Q, int W, Overflow O>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::int64_t overflow_signed_to(std::int64_t v) {
+  if constexpr (requantized_bits<Src, To, Q, true>() <= W) return v;
+  else return overflow_signed(v, W, O);
+}
+template <class Src, int To, Quant Q, int W, Overflow O>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::uint64_t overflow_unsigned_to(std::int64_t v) {
+  constexpr bool fits = requantized_bits<Src, To, Q, false>() <= W;
+  if constexpr (!Src::is_signed && fits) return static_cast<std::uint64_t>(v);
+  else if constexpr (O == Overflow::kSat && fits) return v < 0 ? 0 : static_cast<std::uint64_t>(v);
+  else return overflow_unsigned(v, W, O);
+}
+
 }  // namespace detail
 
 template <int W, int I, Quant Q = Quant::kTrunc, Overflow O = Overflow::kWrap>
@@ -75,31 +118,36 @@ class Fixed {
   using Raw = Int<W>;
 
   CIG_HLS_CONSTEXPR Fixed() = default;
-  static CIG_HLS_CONSTEXPR Fixed from_raw(const Int<W>& r) {
+  static CIG_HLS_CONSTEXPR CIG_HLS_INLINE Fixed from_raw(const Int<W>& r) {
     Fixed f;
     f.raw_ = r;
     return f;
   }
   static CIG_HLS_CONSTEXPR Fixed from_raw_value(std::int64_t r) { return from_raw(Int<W>(r)); }
+  // A raw value the caller knows to lie in W bits (an exact sum).
+  static CIG_HLS_CONSTEXPR CIG_HLS_INLINE Fixed from_exact_raw(std::int64_t r) { return from_raw(Int<W>::exact(r)); }
 
   // From any fixed format: quantize with Q, then overflow with O.
   template <class Src, class = std::enable_if_t<Src::frac_bits >= 0>>
-  CIG_HLS_CONSTEXPR explicit Fixed(const Src& x) {
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit Fixed(const Src& x) {
     static_assert(Src::width + (frac_bits > Src::frac_bits ? frac_bits - Src::frac_bits : 0) <= 64,
                   "conversion would need more than 64 bits");
-    const std::int64_t v = detail::requantize(static_cast<std::int64_t>(x.raw().value()), Src::frac_bits, frac_bits, Q);
-    raw_ = Int<W>(detail::overflow_signed(v, W, O));
+    const std::int64_t v = detail::requantize_to<Src, frac_bits, Q>(static_cast<std::int64_t>(x.raw().value()));
+    raw_ = Int<W>::exact(detail::overflow_signed_to<Src, frac_bits, Q, W, O>(v));
   }
   // From an integer value.
   template <int V>
-  CIG_HLS_CONSTEXPR explicit Fixed(const Int<V>& x) : Fixed(Fixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit Fixed(const Int<V>& x)
+      : Fixed(Fixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
   template <int V>
-  CIG_HLS_CONSTEXPR explicit Fixed(const UInt<V>& x)
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit Fixed(const UInt<V>& x)
       : Fixed(UFixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
 
-  CIG_HLS_CONSTEXPR const Int<W>& raw() const { return raw_; }
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE const Int<W>& raw() const { return raw_; }
   // Integer part, floor.
-  CIG_HLS_CONSTEXPR Int<(I > 0 ? I : 1)> floor_int() const { return Int<(I > 0 ? I : 1)>(raw_.value() >> frac_bits); }
+  CIG_HLS_CONSTEXPR Int<(I > 0 ? I : 1)> floor_int() const {
+    return Int<(I > 0 ? I : 1)>::exact(raw_.value() >> frac_bits);
+  }
 
  private:
   Int<W> raw_;
@@ -118,30 +166,33 @@ class UFixed {
   using Raw = UInt<W>;
 
   CIG_HLS_CONSTEXPR UFixed() = default;
-  static CIG_HLS_CONSTEXPR UFixed from_raw(const UInt<W>& r) {
+  static CIG_HLS_CONSTEXPR CIG_HLS_INLINE UFixed from_raw(const UInt<W>& r) {
     UFixed f;
     f.raw_ = r;
     return f;
   }
   static CIG_HLS_CONSTEXPR UFixed from_raw_value(std::uint64_t r) { return from_raw(UInt<W>(r)); }
+  static CIG_HLS_CONSTEXPR CIG_HLS_INLINE UFixed from_exact_raw(std::uint64_t r) { return from_raw(UInt<W>::exact(r)); }
 
   template <class Src, class = std::enable_if_t<Src::frac_bits >= 0>>
-  CIG_HLS_CONSTEXPR explicit UFixed(const Src& x) {
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit UFixed(const Src& x) {
     static_assert(Src::width + (frac_bits > Src::frac_bits ? frac_bits - Src::frac_bits : 0) <= 64,
                   "conversion would need more than 64 bits");
     static_assert(Src::is_signed || Src::width < 64, "64-bit unsigned sources are not supported");
-    const std::int64_t v = detail::requantize(static_cast<std::int64_t>(x.raw().value()), Src::frac_bits, frac_bits, Q);
-    raw_ = UInt<W>(detail::overflow_unsigned(v, W, O));
+    const std::int64_t v = detail::requantize_to<Src, frac_bits, Q>(static_cast<std::int64_t>(x.raw().value()));
+    raw_ = UInt<W>::exact(detail::overflow_unsigned_to<Src, frac_bits, Q, W, O>(v));
   }
   template <int V>
-  CIG_HLS_CONSTEXPR explicit UFixed(const UInt<V>& x)
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit UFixed(const UInt<V>& x)
       : UFixed(UFixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
   template <int V>
-  CIG_HLS_CONSTEXPR explicit UFixed(const Int<V>& x)
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit UFixed(const Int<V>& x)
       : UFixed(Fixed<V, V, Quant::kTrunc, Overflow::kWrap>::from_raw(x)) {}
 
-  CIG_HLS_CONSTEXPR const UInt<W>& raw() const { return raw_; }
-  CIG_HLS_CONSTEXPR UInt<(I > 0 ? I : 1)> floor_int() const { return UInt<(I > 0 ? I : 1)>(raw_.value() >> frac_bits); }
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE const UInt<W>& raw() const { return raw_; }
+  CIG_HLS_CONSTEXPR UInt<(I > 0 ? I : 1)> floor_int() const {
+    return UInt<(I > 0 ? I : 1)>::exact(raw_.value() >> frac_bits);
+  }
 
  private:
   UInt<W> raw_;
@@ -156,11 +207,11 @@ struct is_hls_fixed<UFixed<W, I, Q, O>> : std::true_type {};
 
 // Exact signed view of an unsigned fixed value (one more integer bit).
 template <int W, int I, Quant Q, Overflow O>
-CIG_HLS_CONSTEXPR Fixed<W + 1, I + 1> to_signed(const UFixed<W, I, Q, O>& x) {
-  return Fixed<W + 1, I + 1>::from_raw(Int<W + 1>(x.raw().value()));
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Fixed<W + 1, I + 1> to_signed(const UFixed<W, I, Q, O>& x) {
+  return Fixed<W + 1, I + 1>::from_raw(to_signed(x.raw()));
 }
 template <int W, int I, Quant Q, Overflow O>
-CIG_HLS_CONSTEXPR Fixed<W, I> to_signed(const Fixed<W, I, Q, O>& x) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Fixed<W, I> to_signed(const Fixed<W, I, Q, O>& x) {
   return Fixed<W, I>::from_raw(x.raw());
 }
 
@@ -182,73 +233,78 @@ struct UnsignedSumFormat {
 }  // namespace detail
 
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
-CIG_HLS_CONSTEXPR auto operator+(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator+(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::SumFormat<Fixed<Wa, Ia>, Fixed<Wb, Ib>>::type;
-  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) +
+  return R::from_exact_raw(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) +
                            detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
-CIG_HLS_CONSTEXPR auto operator-(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator-(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::SumFormat<Fixed<Wa, Ia>, Fixed<Wb, Ib>>::type;
-  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) -
+  return R::from_exact_raw(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) -
                            detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
-CIG_HLS_CONSTEXPR Fixed<Wa + Wb, Ia + Ib> operator*(const Fixed<Wa, Ia, Qa, Oa>& a, const Fixed<Wb, Ib, Qb, Ob>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Fixed<Wa + Wb, Ia + Ib> operator*(const Fixed<Wa, Ia, Qa, Oa>& a,
+                                                                   const Fixed<Wb, Ib, Qb, Ob>& b) {
   return Fixed<Wa + Wb, Ia + Ib>::from_raw(a.raw() * b.raw());
 }
 template <int W, int I, Quant Q, Overflow O>
-CIG_HLS_CONSTEXPR Fixed<W + 1, I + 1> operator-(const Fixed<W, I, Q, O>& a) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE Fixed<W + 1, I + 1> operator-(const Fixed<W, I, Q, O>& a) {
   return Fixed<W + 1, I + 1>::from_raw(-a.raw());
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
-CIG_HLS_CONSTEXPR auto operator+(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator+(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
   using R = typename detail::UnsignedSumFormat<UFixed<Wa, Ia>, UFixed<Wb, Ib>>::type;
-  return R::from_raw_value(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) +
+  return R::from_exact_raw(detail::shift_left(a.raw().value(), R::frac_bits - (Wa - Ia)) +
                            detail::shift_left(b.raw().value(), R::frac_bits - (Wb - Ib)));
 }
 template <int Wa, int Ia, Quant Qa, Overflow Oa, int Wb, int Ib, Quant Qb, Overflow Ob>
-CIG_HLS_CONSTEXPR UFixed<Wa + Wb, Ia + Ib> operator*(const UFixed<Wa, Ia, Qa, Oa>& a, const UFixed<Wb, Ib, Qb, Ob>& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE UFixed<Wa + Wb, Ia + Ib> operator*(const UFixed<Wa, Ia, Qa, Oa>& a,
+                                                                    const UFixed<Wb, Ib, Qb, Ob>& b) {
   return UFixed<Wa + Wb, Ia + Ib>::from_raw(a.raw() * b.raw());
 }
 // Mixed or unsigned difference: through the signed view.
 template <
     class A, class B,
     class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (!A::is_signed || !B::is_signed)>>
-CIG_HLS_CONSTEXPR auto operator-(const A& a, const B& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator-(const A& a, const B& b) {
   return to_signed(a) - to_signed(b);
 }
 template <class A, class B,
           class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (A::is_signed != B::is_signed)>>
-CIG_HLS_CONSTEXPR auto operator+(const A& a, const B& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator+(const A& a, const B& b) {
   return to_signed(a) + to_signed(b);
 }
 template <class A, class B,
           class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value && (A::is_signed != B::is_signed)>,
           class = void>
-CIG_HLS_CONSTEXPR auto operator*(const A& a, const B& b) {
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE auto operator*(const A& a, const B& b) {
   return to_signed(a) * to_signed(b);
 }
 
 // ---- Comparisons -----------------------------------------------------------------------------------
 
 namespace detail {
+// Both raw values aligned to the larger fractional part (exact), compared as integers.
 template <class A, class B>
-CIG_HLS_CONSTEXPR int compare_fixed(const A& a, const B& b) {
-  constexpr int F = max_width(A::frac_bits, B::frac_bits);
+struct AlignedFixed {
+  static constexpr int F = max_width(A::frac_bits, B::frac_bits);
   static_assert(A::width + F - A::frac_bits <= 64 && B::width + F - B::frac_bits <= 64,
                 "comparison needs more than 64 bits");
-  const std::int64_t x = shift_left(static_cast<std::int64_t>(a.raw().value()), F - A::frac_bits);
-  const std::int64_t y = shift_left(static_cast<std::int64_t>(b.raw().value()), F - B::frac_bits);
-  return x < y ? -1 : x > y ? 1 : 0;
-}
+  std::int64_t x, y;
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE AlignedFixed(const A& a, const B& b)
+      : x(shift_left(static_cast<std::int64_t>(a.raw().value()), F - A::frac_bits)),
+        y(shift_left(static_cast<std::int64_t>(b.raw().value()), F - B::frac_bits)) {}
+};
 }  // namespace detail
 
 #define CIG_HLS_FIXED_COMPARE(op)                                                                         \
   template <class A, class B, class = std::enable_if_t<is_hls_fixed<A>::value && is_hls_fixed<B>::value>, \
             class = void, class = void>                                                                   \
-  CIG_HLS_CONSTEXPR bool operator op(const A& a, const B& b) {                                            \
-    return detail::compare_fixed(a, b) op 0;                                                              \
+  CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool operator op(const A& a, const B& b) {                             \
+    const detail::AlignedFixed<A, B> p(a, b);                                                             \
+    return p.x op p.y;                                                                                    \
   }
 CIG_HLS_FIXED_COMPARE(==)
 CIG_HLS_FIXED_COMPARE(!=)
