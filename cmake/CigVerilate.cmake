@@ -8,10 +8,18 @@
 #   * the FST trace code (runs only with `cig cosim --trace`): -O0.
 # Generated code is not ours to keep warning-free (-w) and is not instrumented by the sanitizers
 # (it is the simulator; the harness around it is).
-# Arguments are verilate()'s (SOURCES, TOP_MODULE, PREFIX, TRACE_FST, INCLUDE_DIRS, VERILATOR_ARGS).
+# Arguments are verilate()'s (SOURCES, TOP_MODULE, PREFIX, TRACE_FST, INCLUDE_DIRS, VERILATOR_ARGS),
+# and SPEED: a model built for simulation speed rather than build time (the benchmark's): the
+# clocked code and the runtime at -O2.
 function(cig_verilate target)
-  verilate(${target} ${ARGN} OPT_FAST -O1 OPT_SLOW -O0 OPT_GLOBAL -O1)
-  cmake_parse_arguments(V "" "PREFIX" "" ${ARGN})
+  cmake_parse_arguments(V "SPEED" "PREFIX" "" ${ARGN})
+  set(args ${ARGN})
+  list(REMOVE_ITEM args SPEED)
+  if(V_SPEED)
+    verilate(${target} ${args} OPT_FAST -O2 OPT_SLOW -O0 OPT_GLOBAL -O2)
+  else()
+    verilate(${target} ${args} OPT_FAST -O1 OPT_SLOW -O0 OPT_GLOBAL -O1)
+  endif()
   get_target_property(sources ${target} SOURCES)
   foreach(source IN LISTS sources)
     if(source MATCHES "/${V_PREFIX}__Trace__[^/]*\\.cpp$")

@@ -62,21 +62,25 @@ module qt_mask_memory #(
     req_x = '0;
     req_y = '0;
     up = '0;
+    // Only a valid request has a chain (the rest stay 0: read by nothing that matters, and a
+    // simulator skips them).
     for (int l = 0; l < N_LOG2; l++) begin
       for (int s = 0; s < NSET; s++) begin
-        req = set_i[s*SW +: SW];
-        req_x = req.x;
-        req_y = req.y;
-        up = req.level - LW'(l);
-        reach[l*NSET+s] = set_valid_i[s] && (req.level >= LW'(l));
-        own_level[l*NSET+s] = req.level == LW'(l);
-        ax[(l*NSET+s)*CW +: CW] = req_x >> up;
-        ay[(l*NSET+s)*CW +: CW] = req_y >> up;
-        if (up == LW'(0)) begin
-          abit[(l*NSET+s)*2 +: 2] = req.child;
-        end else begin
-          // The word one level down is child {y[0], x[0]} of this one.
-          abit[(l*NSET+s)*2 +: 2] = {req_y[up - LW'(1)], req_x[up - LW'(1)]};
+        if (set_valid_i[s]) begin
+          req = set_i[s*SW +: SW];
+          req_x = req.x;
+          req_y = req.y;
+          up = req.level - LW'(l);
+          reach[l*NSET+s] = req.level >= LW'(l);
+          own_level[l*NSET+s] = req.level == LW'(l);
+          ax[(l*NSET+s)*CW +: CW] = req_x >> up;
+          ay[(l*NSET+s)*CW +: CW] = req_y >> up;
+          if (up == LW'(0)) begin
+            abit[(l*NSET+s)*2 +: 2] = req.child;
+          end else begin
+            // The word one level down is child {y[0], x[0]} of this one.
+            abit[(l*NSET+s)*2 +: 2] = {req_y[up - LW'(1)], req_x[up - LW'(1)]};
+          end
         end
       end
     end
@@ -84,31 +88,39 @@ module qt_mask_memory #(
 
   // ---- The closure: level by level from the finest ----------------------------------------------
   logic [3:0] set_bits;   // the bits every active chain sets in one chain's word
+  // Written so that a simulator does the work only where there is some (a cycle without a set
+  // request, or a chain that stopped, skips its loops; the logic is the same): the merge of a
+  // word only for an active chain (an inactive one's word is unchanged), the whole closure only
+  // when some request is valid.
   always_comb begin
     act = '0;
-    merged = '0;
+    merged = old_word;
     set_bits = '0;
-    for (int l = N_LOG2 - 1; l >= 0; l--) begin
-      for (int s = 0; s < NSET; s++) begin
-        if (reach[l*NSET+s]) begin
-          if (own_level[l*NSET+s]) begin
-            act[l*NSET+s] = 1'b1;   // the request itself
-          end else if (l + 1 < N_LOG2) begin
-            // The word one level down became full this cycle (and was not already).
-            act[l*NSET+s] = act[(l+1)*NSET+s] && merged[((l+1)*NSET+s)*4 +: 4] == 4'hF &&
-                            old_word[((l+1)*NSET+s)*4 +: 4] != 4'hF;
+    if (|set_valid_i) begin
+      for (int l = N_LOG2 - 1; l >= 0; l--) begin
+        for (int s = 0; s < NSET; s++) begin
+          if (reach[l*NSET+s]) begin
+            if (own_level[l*NSET+s]) begin
+              act[l*NSET+s] = 1'b1;   // the request itself
+            end else if (l + 1 < N_LOG2) begin
+              // The word one level down became full this cycle (and was not already).
+              act[l*NSET+s] = act[(l+1)*NSET+s] && merged[((l+1)*NSET+s)*4 +: 4] == 4'hF &&
+                              old_word[((l+1)*NSET+s)*4 +: 4] != 4'hF;
+            end
           end
         end
-      end
-      for (int s = 0; s < NSET; s++) begin
-        set_bits = '0;
-        for (int t = 0; t < NSET; t++) begin
-          if (act[l*NSET+t] && ax[(l*NSET+t)*CW +: CW] == ax[(l*NSET+s)*CW +: CW] &&
-              ay[(l*NSET+t)*CW +: CW] == ay[(l*NSET+s)*CW +: CW]) begin
-            set_bits = set_bits | (4'b0001 << abit[(l*NSET+t)*2 +: 2]);
+        for (int s = 0; s < NSET; s++) begin
+          if (act[l*NSET+s]) begin
+            set_bits = '0;
+            for (int t = 0; t < NSET; t++) begin
+              if (act[l*NSET+t] && ax[(l*NSET+t)*CW +: CW] == ax[(l*NSET+s)*CW +: CW] &&
+                  ay[(l*NSET+t)*CW +: CW] == ay[(l*NSET+s)*CW +: CW]) begin
+                set_bits = set_bits | (4'b0001 << abit[(l*NSET+t)*2 +: 2]);
+              end
+            end
+            merged[(l*NSET+s)*4 +: 4] = old_word[(l*NSET+s)*4 +: 4] | set_bits;
           end
         end
-        merged[(l*NSET+s)*4 +: 4] = old_word[(l*NSET+s)*4 +: 4] | (act[l*NSET+s] ? set_bits : 4'h0);
       end
     end
   end

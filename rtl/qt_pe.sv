@@ -19,6 +19,9 @@
 // set request raised if full and opaque, q leaves todo). When not busy, or freed this cycle, the
 // head of the input FIFO is popped, its mask word read (combinational, the memory as it was at
 // the start of the cycle) and todo = ~mask; a window with all four children masked is dropped.
+// Start window (start_window_i, ArchConfig::start_window): a popped window above its polygon's
+// start window (record fields start_level, start_x, start_y) keeps only the child on the path to
+// it, todo = ~mask & path: the other children hold no sample of the polygon.
 module qt_pe #(
   parameter int N_LOG2 = qt_pkg::N_LOG2_DEFAULT,
   parameter int LEVEL = 1,                 // level of the children, 1..N_LOG2
@@ -38,6 +41,7 @@ module qt_pe #(
   input  logic              clk_i,
   input  logic              rst_ni,
   input  logic              clear_i,        // frame start
+  input  logic              start_window_i, // architecture option: start at the start window
   // Input FIFO (pixel-record-wide items; the samples field is 0 above the pixel level).
   input  logic              in_valid_i,
   input  logic [PIX_W-1:0]  in_data_i,
@@ -72,6 +76,9 @@ module qt_pe #(
   localparam int OFF_F = qt_pkg::field_lo(qt_pkg::F_F, NE, NP, EW, AW, PW, GW);
   localparam int OFF_POLY = qt_pkg::field_lo(qt_pkg::F_POLY, NE, NP, EW, AW, PW, GW);
   localparam int OFF_SAMPLES = qt_pkg::field_lo(qt_pkg::F_SAMPLES, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_START_LEVEL = qt_pkg::field_lo(qt_pkg::F_START_LEVEL, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_START_X = qt_pkg::field_lo(qt_pkg::F_START_X, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_START_Y = qt_pkg::field_lo(qt_pkg::F_START_Y, NE, NP, EW, AW, PW, GW);
   localparam int POLY_W = WIN_W - OFF_POLY;
   localparam logic [15:0] SCREEN_DOOR = 16'hA5A5;  // (di + dj) even: hls kScreenDoorSamples
 
@@ -93,6 +100,8 @@ module qt_pe #(
   logic [NE*AW-1:0]                win_a, win_b;
   logic [NP*GW-1:0]                win_dp_di, win_dp_dj;
   logic [qt_pkg::W_EXPONENT_W-1:0] win_w_exponent;
+  logic [LW-1:0]                   win_start_level;
+  logic [CW-1:0]                   win_start_x, win_start_y;
 
   qt_window_fields #(
     .NE(NE), .NP(NP), .EW(EW), .AW(AW), .PW(PW), .GW(GW)
@@ -112,7 +121,10 @@ module qt_pe #(
     .b_o          (win_b),
     .dp_di_o      (win_dp_di),
     .dp_dj_o      (win_dp_dj),
-    .w_exponent_o (win_w_exponent)
+    .w_exponent_o (win_w_exponent),
+    .start_level_o (win_start_level),
+    .start_x_o    (win_start_x),
+    .start_y_o    (win_start_y)
   );
 
   // ---- The child under test: the lowest bit of todo_q --------------------------------------------
@@ -267,6 +279,23 @@ module qt_pe #(
   assign in_ready_o = !busy_q || (done && todo_left == 4'b0000);
   assign pop = in_valid_i && in_ready_o;
 
+  // The children the popped window keeps: all four, or above its start window (level LEVEL - 1 <
+  // start_level) only the one on the path, bit start_level - LEVEL of the start window's address.
+  logic [LW-1:0] in_start_level, path_bit;
+  logic [CW-1:0] in_start_x, in_start_y;
+  logic [3:0]    path, keep;
+  assign in_start_level = in_data_i[OFF_START_LEVEL +: LW];
+  assign in_start_x = in_data_i[OFF_START_X +: CW];
+  assign in_start_y = in_data_i[OFF_START_Y +: CW];
+  assign path_bit = in_start_level - LW'(LEVEL);
+  always_comb begin
+    path = 4'hF;
+    if (start_window_i && in_start_level >= LW'(LEVEL)) begin
+      path = 4'b0001 << {in_start_y[path_bit], in_start_x[path_bit]};
+    end
+  end
+  assign keep = ~mask_word_i & path;
+
   always_comb begin
     busy_d = busy_q;
     todo_d = todo_q;
@@ -275,8 +304,8 @@ module qt_pe #(
       busy_d = todo_left != 4'b0000;
     end
     if (pop) begin
-      todo_d = ~mask_word_i;
-      busy_d = mask_word_i != 4'hF;
+      todo_d = keep;
+      busy_d = keep != 4'h0;
     end
     if (clear_i) begin
       todo_d = '0;
@@ -323,6 +352,7 @@ module qt_pe #(
   // identity, colour, edge count and W exponent (carried in win_poly), the input's samples (0).
   logic unused_fields;
   assign unused_fields = ^{win_level, win_id, win_colour, win_edge_count, win_w_exponent,
+                           win_start_level, win_start_x, win_start_y,
                            in_data_i[OFF_SAMPLES +: qt_pkg::SAMPLES_W]};
 
   // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------

@@ -120,6 +120,8 @@ module qt_pixel_processor #(
   logic [NP*GW-1:0]                rec_dp_di, rec_dp_dj;
   logic [qt_pkg::W_EXPONENT_W-1:0] rec_w_exponent;
   logic [qt_pkg::SAMPLES_W-1:0]    rec_samples;
+  logic [LVW-1:0]                  rec_start_level;
+  logic [CW-1:0]                   rec_start_x, rec_start_y;
 
   qt_window_fields #(
     .NE(NE), .NP(NP), .EW(EW), .AW(AW), .PW(PW), .GW(GW)
@@ -139,7 +141,10 @@ module qt_pixel_processor #(
     .b_o          (rec_b),
     .dp_di_o      (rec_dp_di),
     .dp_dj_o      (rec_dp_dj),
-    .w_exponent_o (rec_w_exponent)
+    .w_exponent_o (rec_w_exponent),
+    .start_level_o (rec_start_level),
+    .start_x_o    (rec_start_x),
+    .start_y_o    (rec_start_y)
   );
   assign rec_samples = in_data_i[OFF_SAMPLES +: qt_pkg::SAMPLES_W];
 
@@ -328,7 +333,8 @@ module qt_pixel_processor #(
   // Fields a pixel processor does not read.
   logic unused_fields;
   assign unused_fields = ^{rec_level, rec_d, rec_poly, rec_opaque, rec_edge_count, rec_a, rec_b,
-                           rec_x, rec_y, cfg_addr_i, cfg_data_i};
+                           rec_x, rec_y, rec_start_level, rec_start_x, rec_start_y, cfg_addr_i,
+                           cfg_data_i};
 
   // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
   // The lanes read parameter 0 as I and 1 as W; the light index holds a cover entry + 1.

@@ -68,8 +68,11 @@ package qt_pkg;
   localparam int F_DP_DI = 11;                // [NP] GW
   localparam int F_DP_DJ = 12;                // [NP] GW
   localparam int F_W_EXPONENT = 13;           // two's complement
-  localparam int F_SAMPLES = 14;
-  localparam int F_COUNT = 15;
+  localparam int F_START_LEVEL = 14;          // the start window (hls QuadPolygon::start_level)
+  localparam int F_START_X = 15;
+  localparam int F_START_Y = 16;
+  localparam int F_SAMPLES = 17;
+  localparam int F_COUNT = 18;
   localparam int F_POLY = F_ID;
 
   // Elements of field f (arrays: one per edge, parameter or channel).
@@ -86,8 +89,8 @@ package qt_pkg;
   function automatic int field_elem_w(input int f, input int ew, input int aw, input int pw,
                                       input int gw);
     unique case (f)
-      F_LEVEL: field_elem_w = LEVEL_W;
-      F_X, F_Y: field_elem_w = COORD_W;
+      F_LEVEL, F_START_LEVEL: field_elem_w = LEVEL_W;
+      F_X, F_Y, F_START_X, F_START_Y: field_elem_w = COORD_W;
       F_D: field_elem_w = ew;
       F_F: field_elem_w = pw;
       F_ID: field_elem_w = ID_W;
@@ -117,7 +120,7 @@ package qt_pkg;
     end
   endfunction
 
-  // A window record's width (945 for the defaults) and a pixel record's (961).
+  // A window record's width (969 for the defaults) and a pixel record's (985).
   function automatic int win_w(input int ne, input int np, input int ew, input int aw,
                                input int pw, input int gw);
     win_w = field_lo(F_SAMPLES, ne, np, ew, aw, pw, gw);

@@ -38,6 +38,8 @@ module qt_raster #(
   input  logic                            clk_i,
   input  logic                            rst_ni,
   input  logic                            frame_start_i,
+  // Architecture option (static during a frame): each polygon starts at its start window.
+  input  logic                            start_window_i,
   // Input: the level-0 windows of the polygon pieces, in priority order.
   input  logic                            poly_valid_i,
   input  logic [WIN_W-1:0]                poly_i,
@@ -134,6 +136,7 @@ module qt_raster #(
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
       .clear_i      (frame_start_i),
+      .start_window_i (start_window_i),
       .in_valid_i   (fifo_rvalid[p]),
       .in_data_i    (fifo_rdata[p*PIX_W +: PIX_W]),
       .in_ready_o   (fifo_rready[p]),

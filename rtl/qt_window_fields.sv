@@ -29,7 +29,10 @@ module qt_window_fields #(
   output logic [NE*AW-1:0]                b_o,
   output logic [NP*GW-1:0]                dp_di_o,
   output logic [NP*GW-1:0]                dp_dj_o,
-  output logic [qt_pkg::W_EXPONENT_W-1:0] w_exponent_o
+  output logic [qt_pkg::W_EXPONENT_W-1:0] w_exponent_o,
+  output logic [qt_pkg::LEVEL_W-1:0]      start_level_o,   // the start window
+  output logic [qt_pkg::COORD_W-1:0]      start_x_o,
+  output logic [qt_pkg::COORD_W-1:0]      start_y_o
 );
 
   // Field f's offset and width in this configuration.
@@ -47,6 +50,9 @@ module qt_window_fields #(
   localparam int OFF_DI = qt_pkg::field_lo(qt_pkg::F_DP_DI, NE, NP, EW, AW, PW, GW);
   localparam int OFF_DJ = qt_pkg::field_lo(qt_pkg::F_DP_DJ, NE, NP, EW, AW, PW, GW);
   localparam int OFF_WEXP = qt_pkg::field_lo(qt_pkg::F_W_EXPONENT, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_START_LEVEL = qt_pkg::field_lo(qt_pkg::F_START_LEVEL, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_START_X = qt_pkg::field_lo(qt_pkg::F_START_X, NE, NP, EW, AW, PW, GW);
+  localparam int OFF_START_Y = qt_pkg::field_lo(qt_pkg::F_START_Y, NE, NP, EW, AW, PW, GW);
 
   assign level_o      = window_i[OFF_LEVEL +: qt_pkg::LEVEL_W];
   assign x_o          = window_i[OFF_X +: qt_pkg::COORD_W];
@@ -63,6 +69,9 @@ module qt_window_fields #(
   assign dp_di_o      = window_i[OFF_DI +: NP * GW];
   assign dp_dj_o      = window_i[OFF_DJ +: NP * GW];
   assign w_exponent_o = window_i[OFF_WEXP +: qt_pkg::W_EXPONENT_W];
+  assign start_level_o = window_i[OFF_START_LEVEL +: qt_pkg::LEVEL_W];
+  assign start_x_o    = window_i[OFF_START_X +: qt_pkg::COORD_W];
+  assign start_y_o    = window_i[OFF_START_Y +: qt_pkg::COORD_W];
 
   // ---- Limits of the record widths (rtl/README.md "Parameters") ---------------------------------
   // edge_count must count the edges; d is formed from A and B sign-extended and shifted (EW > AW);

@@ -29,7 +29,7 @@ struct EngineArgs {
   std::vector<std::string> opts;
   bool snap = false;
   std::string fan_split = "on";
-  std::string arch, masks;  // shorthands for --engine-opt arch=... / masks=...
+  std::string arch, masks, start;  // shorthands for --engine-opt arch=... / masks=... / start=...
 
   // `required`: the command compares an engine with the reference, so it must be named.
   void add_to(CLI::App* app, bool required = false) {
@@ -48,6 +48,9 @@ struct EngineArgs {
     app->add_option("--arch", arch,
                     "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
     app->add_option("--masks", masks, "quadtree engines: multilevel priority masks on|off");
+    app->add_option("--start-window", start,
+                    "quadtree engines: a polygon's subdivision starts at the whole screen (screen, default) or "
+                    "at the smallest window holding its bounding box (bbox)");
   }
   EngineOptions options() const {
     EngineOptions o;
@@ -61,6 +64,7 @@ struct EngineArgs {
     }
     if (!arch.empty()) o.params["arch"] = arch;
     if (!masks.empty()) o.params["masks"] = masks;
+    if (!start.empty()) o.params["start"] = start;
     make_engine(engine, o);  // validates the name and the options before any work
     return o;
   }

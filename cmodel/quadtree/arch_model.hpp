@@ -69,7 +69,24 @@ struct ArchConfig {
   int input_gap_percent = 0;              // verification: cycles the input port is empty
   int output_stall_percent = 0;           // verification: cycles a pixel processor is not ready
   int side_log2 = hls::kDefaultSideLog2;  // S = 2^t samples a side per pixel (the RTL: 4 x 4)
+  // A polygon piece starts its subdivision at its start window (hls QuadPolygon::start_level):
+  // a PE loading a window above that level keeps only the child on the path to it (the others
+  // hold no sample of the piece and are skipped like masked ones, at no cycle). Off: the seed's
+  // start at the whole screen. The windows still pass every level in FIFO order (polygon order
+  // at every pixel processor) and are computed by the same subdivision: the image is the same.
+  bool start_window = false;
 };
+
+// The children of window w a PE tests: all four, or, with ArchConfig::start_window and w above
+// the piece's start window, only the one on the path to it (q = 2 y_b + x_b).
+template <class P>
+unsigned start_window_children(const hls::QuadWindow<P>& w, bool start_window) {
+  const int level = int(w.level.value()), start = int(w.poly.start_level.value());
+  if (!start_window || level >= start) return 0xFu;
+  const int sh = start - level - 1;  // the child's address bit of the start window
+  const unsigned xb = (unsigned(w.poly.start_x.value()) >> sh) & 1u, yb = (unsigned(w.poly.start_y.value()) >> sh) & 1u;
+  return 1u << (2 * yb + xb);
+}
 
 // What flows through the FIFOs: a window (or a pixel record: a level-n window and its samples).
 template <class P>
@@ -86,6 +103,7 @@ struct LevelStats {
   long long full_opaque = 0;        // children of this level fully covered by an opaque polygon
   long long loaded = 0;             // windows of this level a PE took
   long long loaded_all_masked = 0;  // ... of which all four children were masked
+  long long outside_start = 0;      // children of this level skipped off the path to the start window
 };
 
 struct PieceStats {
@@ -409,7 +427,9 @@ class ArchModel {
     st.level[std::size_t(wl) + 1].masked += __builtin_popcount(mask);
     if (mask != 0) st.pieces[next.piece].met_mask = true;
     if (tracer) tracer->load(t, index, next, mask);
-    pe.todo = ~mask & 0xFu;
+    const unsigned path = start_window_children(next.w, cfg_.start_window);
+    st.level[std::size_t(wl) + 1].outside_start += 4 - __builtin_popcount(path);
+    pe.todo = ~mask & path;
     if (pe.todo == 0) {
       ++ls.loaded_all_masked;
       release(slot);

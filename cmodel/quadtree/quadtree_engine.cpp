@@ -21,6 +21,7 @@ namespace {
 struct QuadOptions {
   std::string arch = "np";
   bool masks = true;
+  bool start_window = false;  // start=bbox: each piece's subdivision starts at its start window
   std::string format = "fine";
   int fifo = 2;
   double clock_mhz = 100;
@@ -70,6 +71,7 @@ class QuadPipeline {
     rep["format"] = format_;
     rep["architecture"] = arch.text;
     rep["masks"] = options_.masks;
+    rep["start"] = options_.start_window ? "bbox" : "screen";
     rep["fifo_depth"] = options_.fifo;
     rep["samples_per_pixel"] = 1 << (2 * options_.side_log2);
     rep["threads"] = options_.threads;
@@ -139,6 +141,7 @@ class QuadPipeline {
     cfg.fifo_depth = options_.fifo;
     cfg.masks = options_.masks;
     cfg.side_log2 = options_.side_log2;
+    cfg.start_window = options_.start_window;
     return cfg;
   }
 
@@ -163,6 +166,7 @@ class QuadPipeline {
                         {"windows_all_masked", ls.loaded_all_masked},
                         {"children_tested", ls.tested},
                         {"children_masked", ls.masked},
+                        {"children_outside_start", ls.outside_start},
                         {"children_covered", ls.covered},
                         {"children_full_opaque", ls.full_opaque}});
     }
@@ -277,6 +281,10 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
     } else if (key == "masks") {
       if (value != "on" && value != "off") throw InputError("", "--masks", "must be on or off, not '" + value + "'");
       o.masks = value == "on";
+    } else if (key == "start") {
+      if (value != "screen" && value != "bbox")
+        throw InputError("", "--start-window", "must be screen or bbox, not '" + value + "'");
+      o.start_window = value == "bbox";
     } else if (key == "format" && !twin) {
       if (value != "coarse" && value != "medium" && value != "fine")
         throw InputError("", "--engine-opt", "format '" + value + "' is not one of coarse, medium, fine");
@@ -296,10 +304,10 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
         throw InputError("", "--engine-opt", "clock must be a frequency in MHz, > 0");
       o.clock_mhz = v;
     } else {
-      throw InputError(
-          "", "--engine-opt",
-          std::string("engine '") + engine + "' takes no option '" + key +
-              (twin ? "' (known: arch, masks, fifo, clock, spp)" : "' (known: arch, masks, format, fifo, clock, spp)"));
+      throw InputError("", "--engine-opt",
+                       std::string("engine '") + engine + "' takes no option '" + key +
+                           (twin ? "' (known: arch, masks, start, fifo, clock, spp)"
+                                 : "' (known: arch, masks, start, format, fifo, clock, spp)"));
     }
   }
   if (twin) return std::make_unique<QuadEngine<QuadDoubleArith>>(o, engine, "double");

@@ -4,6 +4,9 @@
 // (--engine-opt KEY=VALUE, or the CLI's --arch and --masks):
 //   arch=STR        architecture of eq. 1 (architecture.hpp), default "np" (one PE per level)
 //   masks=on|off    multilevel priority masks, default on
+//   start=screen|bbox  where a polygon piece's subdivision starts: the whole screen (default, the
+//                   seed) or its start window, the smallest window holding its bounding box
+//                   (ArchConfig::start_window; same image, fewer cycles)
 //   format=coarse|medium|fine   parameter formats (hls/quadtree/records.hpp), default fine
 //   fifo=K          FIFO depth between stages, 1..64, default 2
 //   clock=MHZ       the clock the report converts cycles at, default 100

@@ -88,6 +88,12 @@ struct QuadPolygon {
   EdgeGradient a[kQuadMaxEdges], b[kQuadMaxEdges];
   typename P::Gradient dp_di[kQuadParams], dp_dj[kQuadParams];
   Int<10> w_exponent;  // W value units: 1/Z = value * 2^w_exponent
+  // The start window: the smallest window (level start_level, address start_x, start_y) holding
+  // every lattice sample of the piece's bounding box (setup.hpp). With the architecture option
+  // ArchConfig::start_window a PE above that level tests only the child on the path to it: the
+  // other children hold no sample of the piece (cmodel/quadtree/arch_model.hpp).
+  UInt<4> start_level;
+  UInt<10> start_x, start_y;
 };
 
 // A window of level `level` with address (x, y): the state a PE reads.

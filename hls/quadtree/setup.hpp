@@ -81,6 +81,37 @@ inline EdgeValue root_coverage(const EdgeGradient& a, const EdgeGradient& b, con
   return EdgeValue(c.value() + span * (ap + bp));
 }
 
+// The start window of a piece (records.hpp QuadPolygon::start_level): the deepest level l <= n
+// whose one window holds the sample box [i0, i1] x [j0, j1] (lattice samples, clamped to the
+// lattice), and that window's address. A box with no sample keeps the whole screen (level 0).
+template <class P>
+void set_start_window(int i0, int i1, int j0, int j1, const LatticeGeometry& g, QuadPolygon<P>& poly) {
+  const int last = g.rows() - 1;
+  i0 = i0 < 0 ? 0 : i0;
+  j0 = j0 < 0 ? 0 : j0;
+  i1 = i1 > last ? last : i1;
+  j1 = j1 > last ? last : j1;
+  int level = 0;
+  if (i0 <= i1 && j0 <= j1) {
+    for (int l = 1; l <= kQuadMaxLevels; ++l) {
+      if (l > g.raster_log2) break;
+      const int sh = g.raster_log2 - l + g.side_log2;  // a level-l window has 2^sh samples a side
+      if ((i0 >> sh) == (i1 >> sh) && (j0 >> sh) == (j1 >> sh)) level = l;
+    }
+  }
+  const int sh = g.raster_log2 - level + g.side_log2;
+  poly.start_level = UInt<4>(level);
+  poly.start_x = UInt<10>(level == 0 ? 0 : i0 >> sh);
+  poly.start_y = UInt<10>(level == 0 ? 0 : j0 >> sh);
+}
+
+// The samples of the half-unit box [h0, h1] along one axis: ceil((h0 - o) / s) .. floor((h1 - o) / s),
+// the bounding-box edges' bounds below.
+inline void box_samples(int h0, int h1, const LatticeGeometry& g, int& k0, int& k1) {
+  k0 = ceil_shift(h0 - g.offset_half, g.log2_half_spacing);
+  k1 = floor_shift(h1 - g.offset_half, g.log2_half_spacing);
+}
+
 // One convex piece: vertices idx[0..m) of the input (half units hx, hy given).
 template <class P>
 void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices],
@@ -168,6 +199,10 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
   }
   poly.edge_count = UInt<4>(used);
   bbox_added = UInt<3>(added);
+  int i0, i1, j0, j1;
+  box_samples(extreme[0], extreme[1], g, i0, i1);
+  box_samples(extreme[2], extreme[3], g, j0, j1);
+  set_start_window(i0, i1, j0, j1, g, poly);
 
   // Parameter planes (Newell, hls/pixel/attribute_planes.hpp).
   typename P::VertexI vi[kMaxVertices];

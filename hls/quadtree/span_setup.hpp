@@ -64,6 +64,21 @@ void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece&
   }
   for (int k = 0; k < kQuadMaxEdges; ++k) root.d[k] = quad_detail::root_coverage(poly.a[k], poly.b[k], c[k], g);
   poly.edge_count = UInt<4>(4);
+  // The start window: the piece's rows of the whole polygon's box (its samples lie in both).
+  int box[4] = {hx[0], hx[0], hy[0], hy[0]};
+  for (int k = 1; k < kMaxVertices; ++k) {
+    if (k >= n) break;
+    if (hx[k] < box[0]) box[0] = hx[k];
+    if (hx[k] > box[1]) box[1] = hx[k];
+    if (hy[k] < box[2]) box[2] = hy[k];
+    if (hy[k] > box[3]) box[3] = hy[k];
+  }
+  int i0, i1, j0, j1;
+  quad_detail::box_samples(box[0], box[1], g, i0, i1);
+  quad_detail::box_samples(box[2], box[3], g, j0, j1);
+  if (j0 < int(piece.row_first.value())) j0 = int(piece.row_first.value());
+  if (j1 > int(piece.row_last.value())) j1 = int(piece.row_last.value());
+  quad_detail::set_start_window(i0, i1, j0, j1, g, poly);
 }
 
 // Top function (HLS): the default format; false when the polygon's vertices all lie on one line.

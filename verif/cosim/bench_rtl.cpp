@@ -7,6 +7,8 @@
 // The setup kernel's level-0 windows are built once (not timed); each iteration runs one frame:
 // the table writes (the fog table only the first time), the frame, the read-out of every pixel.
 // The cycles/s counter counts the frame's cycles only, over the whole iteration's time.
+// 9p and 7p2t run the models Verilated for speed (verif/cosim/CMakeLists.txt, cig_rtl_bench_models),
+// the 64-line cases the co-simulation's (FST tracing compiled in, assertions on).
 // Built by the default build, not run by ctest (a smoke test runs one quick case):
 //   build/bin/bench_rtl [--benchmark_filter=REGEX]
 #include <benchmark/benchmark.h>
@@ -55,7 +57,9 @@ const ScreenFrame& overlap_frame() {
 
 void run_rtl(benchmark::State& state, const ScreenFrame& (*input)(), int raster_log2, int tree_levels) {
   const ScreenFrame& frame = input();
-  auto rtl = cig::cosim::make_rtl_runner(raster_log2, tree_levels);
+  // The models Verilated for speed where the build has them (9p, 7p2t), else the co-simulation's.
+  auto rtl = cig::cosim::make_fast_rtl_runner(raster_log2, tree_levels);
+  if (!rtl) rtl = cig::cosim::make_rtl_runner(raster_log2, tree_levels);
   if (!rtl) {
     state.SkipWithError("this build has no such RTL configuration");
     return;

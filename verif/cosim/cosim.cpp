@@ -24,6 +24,7 @@ Trace model_trace(const quad::Architecture& arch, const std::vector<hls::QuadWin
   cfg.stall_seed = stalls.seed;
   cfg.input_gap_percent = stalls.input_gap_percent;
   cfg.output_stall_percent = stalls.output_stall_percent;
+  cfg.start_window = stalls.start_window;
   quad::ArchModel<RtlArith> model(arch, cfg);
   const RtlLayout L = rtl_layout();
   Trace t;

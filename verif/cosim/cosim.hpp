@@ -33,10 +33,13 @@ using RtlArith = hls::QuadFixedArith<hls::QuadFormatFine>;
 using RtlLayout = RecordLayout<RtlArith>;
 inline RtlLayout rtl_layout() { return RtlLayout(); }
 
+// The run's settings both sides take: the verification stalls and the architecture option
+// ArchConfig::start_window (the RTL's input start_window_i).
 struct StallConfig {
   std::uint32_t seed = 1;
   int input_gap_percent = 0;
   int output_stall_percent = 0;
+  bool start_window = false;
 };
 
 enum class EventKind { kLoad, kEmit, kPixel };
@@ -148,6 +151,9 @@ class RtlRunner {
 };
 // nullptr when this build has no such configuration.
 std::unique_ptr<RtlRunner> make_rtl_runner(int raster_log2, int tree_levels);
+// The benchmark's models of the same RTL, Verilated for speed (9p and 7p2t; no tracing: trace_to
+// throws); nullptr for the other configurations. In the library cig_cosim_fast (bench_rtl).
+std::unique_ptr<RtlRunner> make_fast_rtl_runner(int raster_log2, int tree_levels);
 
 // One frame through both sides.
 struct CosimResult {

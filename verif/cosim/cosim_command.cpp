@@ -1,5 +1,6 @@
 // cig cosim SCENE|POLYS [--arch STR] [--frame K | --frames A:B] [--channel C] [--trace FILE.fst]
-//                       [--stall-seed S] [--input-gaps P] [--output-stalls P] [--report FILE]
+//                       [--stall-seed S] [--input-gaps P] [--output-stalls P]
+//                       [--start-window screen|bbox] [--report FILE]
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -28,6 +29,9 @@ void CosimCommand::add_options(CLI::App& app) {
       ->check(CLI::Range(0, 95));
   app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")
       ->check(CLI::Range(0, 95));
+  app.add_option("--start-window", start_window,
+                 "where a polygon's subdivision starts: screen (default, the seed) or bbox (its start window)")
+      ->check(CLI::IsMember({"screen", "bbox"}));
   app.add_option("--report", report_file, "write a JSON report");
   model_limit.add_to(&app);
 }
@@ -58,15 +62,16 @@ int CosimCommand::run() {
     if (!parent.empty()) std::filesystem::create_directories(parent);
     rtl->trace_to(trace_file);
   }
-  const cosim::StallConfig stalls{stall_seed, input_gaps, output_stalls};
+  const cosim::StallConfig stalls{stall_seed, input_gaps, output_stalls, start_window == "bbox"};
   std::cout << "cig cosim: " << input << ", architecture " << a.text << " (" << a.pe_count()
             << " PEs), stalls: input gaps " << input_gaps << " %, output stalls " << output_stalls << " % (seed "
-            << stall_seed << ")\n";
+            << stall_seed << "), start window " << start_window << "\n";
   std::cout << " frame  ch   records  mismatch  cycles model  cycles RTL   equal  RTL cycles/s  model cycles/s\n";
   nlohmann::ordered_json rep;
   rep["command"] = "cosim";
   rep["input"] = input;
   rep["architecture"] = a.text;
+  rep["start_window"] = start_window;
   rep["runs"] = nlohmann::ordered_json::array();
   long long records = 0, mismatches = 0, bad_cycles = 0;
   std::string first;

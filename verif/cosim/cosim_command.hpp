@@ -17,6 +17,7 @@ struct CosimCommand {
   int frame_k = -1, channel = -1;
   unsigned stall_seed = 1;
   int input_gaps = 0, output_stalls = 0;
+  std::string start_window = "screen";  // --start-window screen|bbox (ArchConfig::start_window)
   CLI::Option* frame_opt = nullptr;
   ModelLimitArgs model_limit;
   void add_options(CLI::App& app);  // the options, on cig-cosim's own command line

@@ -35,6 +35,7 @@ module qt_raster_cosim_tb #(
   input  logic                            clk_i,
   input  logic                            rst_ni,
   input  logic                            frame_start_i,
+  input  logic                            start_window_i,
   input  logic                            poly_valid_i,
   input  logic [WIN_W-1:0]                poly_i,
   output logic                            poly_ready_o,
@@ -61,7 +62,7 @@ module qt_raster_cosim_tb #(
   output logic [23:0]                     rd_rgb_o
 );
 
-  logic                 frame_start_q, poly_valid_q, cfg_valid_q;
+  logic                 frame_start_q, start_window_q, poly_valid_q, cfg_valid_q;
   logic [WIN_W-1:0]     poly_q;
   logic [NPIX-1:0]      pixel_stall_q;
   logic [qt_pkg::CFG_TARGET_W-1:0] cfg_target_q;
@@ -71,6 +72,7 @@ module qt_raster_cosim_tb #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       frame_start_q <= 1'b0;
+      start_window_q <= 1'b0;
       poly_valid_q  <= 1'b0;
       poly_q        <= '0;
       pixel_stall_q <= '0;
@@ -80,6 +82,7 @@ module qt_raster_cosim_tb #(
       cfg_data_q    <= '0;
     end else begin
       frame_start_q <= frame_start_i;
+      start_window_q <= start_window_i;
       poly_valid_q  <= poly_valid_i;
       poly_q        <= poly_i;
       pixel_stall_q <= pixel_stall_i;
@@ -98,6 +101,7 @@ module qt_raster_cosim_tb #(
     .LIGHT_COVERS (LIGHT_COVERS)
   ) u_raster (
     .frame_start_i (frame_start_q),
+    .start_window_i (start_window_q),
     .poly_valid_i  (poly_valid_q),
     .poly_i        (poly_q),
     .pixel_stall_i (pixel_stall_q),

@@ -53,13 +53,19 @@ class Bits {
     const std::uint64_t v = get(lo, width);
     return width >= 64 ? std::int64_t(v) : std::int64_t(v << (64 - width)) >> (64 - width);
   }
-  // Copies `width` bits starting at bit `lo` of raw LSB-first words (a Verilator port).
+  // Copies `width` bits starting at bit `lo` of raw LSB-first words (a Verilator port), a word at
+  // a time (the co-simulation reads a record or two every cycle); reads no word past the last bit.
   void load(const std::uint32_t* words, int lo, int width) {
     *this = Bits(width);
-    for (int b = 0; b < width; ++b) {
-      const int i = lo + b;
-      if ((words[i >> 5] >> (i & 31)) & 1u) w_[std::size_t(b >> 5)] |= 1u << (b & 31);
+    if (width <= 0) return;
+    const int base = lo >> 5, shift = lo & 31, last = (lo + width - 1) >> 5;
+    for (std::size_t k = 0; k < w_.size(); ++k) {
+      const int at = base + int(k);
+      std::uint64_t v = words[at] >> shift;
+      if (shift != 0 && at + 1 <= last) v |= std::uint64_t(words[at + 1]) << (32 - shift);
+      w_[k] = std::uint32_t(v);
     }
+    if ((width & 31) != 0) w_.back() &= (1u << (width & 31)) - 1u;
   }
   bool operator==(const Bits& o) const { return width_ == o.width_ && w_ == o.w_; }
   bool operator!=(const Bits& o) const { return !(*this == o); }
@@ -108,6 +114,9 @@ enum class RecordField {
   kDpDi,
   kDpDj,
   kWExponent,
+  kStartLevel,
+  kStartX,
+  kStartY,
   kSamples,
   kCount
 };
@@ -137,6 +146,9 @@ struct RecordFields {
     v(RecordField::kDpDi, "poly.dp_di", w.poly.dp_di);
     v(RecordField::kDpDj, "poly.dp_dj", w.poly.dp_dj);
     v(RecordField::kWExponent, "poly.w_exponent", w.poly.w_exponent);
+    v(RecordField::kStartLevel, "poly.start_level", w.poly.start_level);
+    v(RecordField::kStartX, "poly.start_x", w.poly.start_x);
+    v(RecordField::kStartY, "poly.start_y", w.poly.start_y);
     v(RecordField::kSamples, "samples", samples);
   }
 

@@ -153,6 +153,46 @@ TEST(Cosim, StallsRandomGapsAndBackPressure) {
     for (int t = 1; t <= 2; ++t) expect_equal(f, 6, t, StallConfig{seed, 35, 40});
 }
 
+// The start window (ArchConfig::start_window, the RTL's start_window_i): RTL and model equal record
+// for record and cycle for cycle with the option on (and off, above); on gives the image of off in
+// no more cycles.
+void expect_start_window(const ScreenFrame& f, int raster_log2, int tree_levels, StallConfig stalls = {}) {
+  SCOPED_TRACE("start window, raster " + std::to_string(1 << raster_log2) + ", tree levels " +
+               std::to_string(tree_levels));
+  auto rtl = make_rtl_runner(raster_log2, tree_levels);
+  ASSERT_TRUE(rtl != nullptr);
+  const RtlConfig cfg{raster_log2, tree_levels};
+  stalls.start_window = false;
+  const CosimResult off = cosim_frame(f, *rtl, cfg, stalls);
+  stalls.start_window = true;
+  const CosimResult on = cosim_frame(f, *rtl, cfg, stalls);
+  for (const CosimResult* r : {&off, &on})
+    EXPECT_TRUE(r->comparison.ok()) << r->comparison.mismatches << " mismatches of " << r->comparison.records_compared
+                                    << " records; cycles model " << r->model.cycles << " RTL " << r->rtl.cycles
+                                    << "\nfirst: " << r->comparison.first;
+  EXPECT_EQ(on.rtl.image.rgb, off.rtl.image.rgb);
+  EXPECT_EQ(on.model.image.rgb, off.model.image.rgb);
+  if (stalls.input_gap_percent == 0 && stalls.output_stall_percent == 0) EXPECT_LE(on.rtl.cycles, off.rtl.cycles);
+}
+
+TEST(Cosim, StartWindow) {
+  Rng r(8);
+  ScreenFrame f = empty_frame(64);
+  for (int k = 0; k < 100; ++k) f.polygons.push_back(random_polygon(r, uniform(r, 0.01, 0.4), 10 + k));
+  for (int t = 1; t <= 2; ++t) {
+    expect_start_window(f, 6, t);
+    expect_start_window(f, 6, t, StallConfig{13, 30, 30});
+  }
+}
+
+TEST(Cosim, StartWindowAirfield) {
+  const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
+  ScenePipeline pipeline(scene);
+  nlohmann::ordered_json rep;
+  const ScreenFrame f = pipeline.geometry(0, 1, rep);
+  for (int t = 1; t <= 2; ++t) expect_start_window(f, 9, t);
+}
+
 // More lit pixels than the RTL's light-cover table holds (its LIGHT_COVERS, read from the
 // Verilated model): a clear input error before any cycle.
 TEST(Cosim, TooManyLitPixelsIsAnInputError) {

@@ -3,6 +3,7 @@
 // references). Shared by the co-simulation's runner and the RTL unit tests.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -21,10 +22,16 @@ template <class T>
 std::uint64_t port_field(const T& v, int lo, int width) {
   return (std::uint64_t(v) >> lo) & (width >= 64 ? ~0ull : (1ull << width) - 1);
 }
+// width <= 64, a piece of a word at a time.
 template <std::size_t N>
 std::uint64_t port_field(const VlWide<N>& v, int lo, int width) {
   std::uint64_t r = 0;
-  for (int b = 0; b < width; ++b) r |= std::uint64_t((v[std::size_t((lo + b) >> 5)] >> ((lo + b) & 31)) & 1u) << b;
+  for (int b = 0; b < width;) {
+    const int i = lo + b, take = std::min(32 - (i & 31), width - b);
+    const std::uint64_t piece = std::uint64_t(v[std::size_t(i >> 5)] >> (i & 31));
+    r |= (piece & ((1ull << take) - 1)) << b;
+    b += take;
+  }
   return r;
 }
 template <class T>

@@ -355,6 +355,10 @@ TEST(RtlWindowFields, EveryFieldAtTheTablesOffset) {
     check(RecordField::kDpDj, port_bits(m.dp_dj_o, 0, L.field_width(RecordField::kDpDj)), "dp_dj_o");
     check(RecordField::kWExponent, port_bits(m.w_exponent_o, 0, L.field_width(RecordField::kWExponent)),
           "w_exponent_o");
+    check(RecordField::kStartLevel, port_bits(m.start_level_o, 0, L.field_width(RecordField::kStartLevel)),
+          "start_level_o");
+    check(RecordField::kStartX, port_bits(m.start_x_o, 0, L.field_width(RecordField::kStartX)), "start_x_o");
+    check(RecordField::kStartY, port_bits(m.start_y_o, 0, L.field_width(RecordField::kStartY)), "start_y_o");
     // The polygon's constants: id up to the end of the window.
     const int poly_lo = L.field_lo(RecordField::kId);
     ASSERT_TRUE(port_bits(m.poly_o, 0, L.win_w - poly_lo) == field(poly_lo, L.win_w - poly_lo)) << "poly_o";

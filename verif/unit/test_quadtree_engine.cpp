@@ -160,6 +160,32 @@ TEST(QuadtreeEngine, ThreadsGiveTheSameImageAndCycles) {
   }
 }
 
+// The start window (start=bbox, ArchConfig::start_window): every piece starts its subdivision at
+// the smallest window holding its bounding box instead of the whole screen. The same windows'
+// parameters come out of the same subdivision and reach the pixels in the same order, so the
+// image is identical; the PEs above the start window test one child instead of four, so the
+// tests and the cycles never grow (pipeline, tree, stacks; masks on and off).
+TEST(QuadtreeEngine, StartWindowChangesCyclesNotTheImage) {
+  const ScreenFrame f = depth10();
+  for (const char* arch : {"7p", "5p2t", "7s"})
+    for (const char* masks : {"on", "off"}) {
+      SCOPED_TRACE(std::string(arch) + " masks " + masks);
+      const EngineRun screen = run(f, "quadtree", {{"arch", arch}, {"masks", masks}, {"start", "screen"}});
+      const EngineRun bbox = run(f, "quadtree", {{"arch", arch}, {"masks", masks}, {"start", "bbox"}});
+      EXPECT_EQ(screen.out.image.rgb, bbox.out.image.rgb);
+      EXPECT_EQ(screen.out.ids.id, bbox.out.ids.id);
+      long long tested_screen = 0, tested_bbox = 0, outside = 0;
+      for (const auto& l : screen.report["levels"]) tested_screen += l["children_tested"].get<long long>();
+      for (const auto& l : bbox.report["levels"]) {
+        tested_bbox += l["children_tested"].get<long long>();
+        outside += l["children_outside_start"].get<long long>();
+      }
+      EXPECT_LT(tested_bbox, tested_screen);
+      EXPECT_GT(outside, 0);
+      EXPECT_LE(bbox.report["cycles"]["frame"].get<long long>(), screen.report["cycles"]["frame"].get<long long>());
+    }
+}
+
 TEST(QuadtreeEngine, RejectsBadOptions) {
   EngineOptions o;
   o.params = {{"arch", "9q"}};
@@ -169,6 +195,8 @@ TEST(QuadtreeEngine, RejectsBadOptions) {
   o.params = {{"format", "huge"}};
   EXPECT_THROW(make_engine("quadtree", o), InputError);
   o.params = {{"fifo", "0"}};
+  EXPECT_THROW(make_engine("quadtree", o), InputError);
+  o.params = {{"start", "corner"}};
   EXPECT_THROW(make_engine("quadtree", o), InputError);
   // The level count is checked against the frame's raster: 9 levels for a 64-line raster.
   o.params = {{"arch", "9p"}};
