@@ -220,20 +220,28 @@ void covered_runs(const CoverageSetup& s, int j, int i0, int i1, RunFn&& run) {
   }
 }
 
-// Visits the covered samples of an m x m lattice row by row, as runs: run(j, span, lo, hi) for
-// each run of covered samples lo..hi of row j (span: the row's rounded boundary). Only rows
-// row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
-template <class RunFn>
-void for_each_covered_run(const CoverageSetup& s, int m, int row_lo, int row_hi, RunFn&& run) {
+// Visits the rows row_lo..row_hi (inclusive) of an m x m lattice that have candidate samples:
+// row(j, span, i0, i1) with the row's rounded boundary and its candidates i0..i1.
+template <class RowFn>
+void for_each_candidate_row(const CoverageSetup& s, int m, int row_lo, int row_hi, RowFn&& row) {
   if (s.empty) return;
   const int j0 = int(std::max(double(row_lo), std::ceil(s.ymin)));
   const int j1 = int(std::min(double(row_hi), std::floor(s.ymax)));
   for (int j = j0; j <= j1; ++j) {
     RowSpan span;
     int i0, i1;
-    if (!row_candidates(s, m, j, span, i0, i1)) continue;
-    covered_runs(s, j, i0, i1, [&](int lo, int hi) { run(j, span, lo, hi); });
+    if (row_candidates(s, m, j, span, i0, i1)) row(j, span, i0, i1);
   }
+}
+
+// Visits the covered samples of an m x m lattice row by row, as runs: run(j, span, lo, hi) for
+// each run of covered samples lo..hi of row j (span: the row's rounded boundary). Only rows
+// row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
+template <class RunFn>
+void for_each_covered_run(const CoverageSetup& s, int m, int row_lo, int row_hi, RunFn&& run) {
+  for_each_candidate_row(s, m, row_lo, row_hi, [&](int j, const RowSpan& span, int i0, int i1) {
+    covered_runs(s, j, i0, i1, [&](int lo, int hi) { run(j, span, lo, hi); });
+  });
 }
 
 // Visits every covered sample of an m x m lattice row by row: row(j, span) once per row that has
@@ -241,18 +249,12 @@ void for_each_covered_run(const CoverageSetup& s, int m, int row_lo, int row_hi,
 // Only rows row_lo..row_hi (inclusive) are visited, so a caller can work strip by strip.
 template <class RowFn, class SampleFn>
 void for_each_covered_sample(const CoverageSetup& s, int m, int row_lo, int row_hi, RowFn&& row, SampleFn&& sample) {
-  if (s.empty) return;
-  const int j0 = int(std::max(double(row_lo), std::ceil(s.ymin)));
-  const int j1 = int(std::min(double(row_hi), std::floor(s.ymax)));
-  for (int j = j0; j <= j1; ++j) {
-    RowSpan span;
-    int i0, i1;
-    if (!row_candidates(s, m, j, span, i0, i1)) continue;
+  for_each_candidate_row(s, m, row_lo, row_hi, [&](int j, const RowSpan& span, int i0, int i1) {
     row(j, span);
     covered_runs(s, j, i0, i1, [&](int lo, int hi) {
       for (int i = lo; i <= hi; ++i) sample(i, j);
     });
-  }
+  });
 }
 
 template <class SampleFn>
