@@ -114,32 +114,19 @@ class RtlRunnerImpl final : public RtlRunner {
       // What the cycle does (combinational from the registers and this cycle's inputs); a PE that
       // finishes its window emits its last child before it loads the next one, as in the model.
       for (int p = 0; p < npe_; ++p) {
-        if (port_bit(top_->pe_emit_valid_o, p)) {
-          Event e{EventKind::kEmit,
-                  cycle,
-                  int(port_field(top_->pe_emit_child_o, 2 * p, 2)),
-                  0,
-                  port_bit(top_->pe_emit_full_o, p),
-                  Bits()};
-          e.record = port_bits(top_->pe_emit_data_o, p * L_.pix_w, L_.pix_w);
-          t.pe[std::size_t(p)].push_back(std::move(e));
-        }
-        if (port_bit(top_->pe_load_valid_o, p)) {
+        if (port_bit(top_->pe_emit_valid_o, p))
+          t.pe[std::size_t(p)].push_back({EventKind::kEmit, cycle, int(port_field(top_->pe_emit_child_o, 2 * p, 2)), 0,
+                                          port_bit(top_->pe_emit_full_o, p),
+                                          port_bits(top_->pe_emit_data_o, p * L_.pix_w, L_.pix_w)});
+        if (port_bit(top_->pe_load_valid_o, p))
           t.pe[std::size_t(p)].push_back(
               {EventKind::kLoad, cycle, 0, unsigned(port_field(top_->pe_load_mask_o, 4 * p, 4)), false, Bits()});
-        }
       }
       for (int u = 0; u < npix_; ++u)
-        if (port_bit(top_->px_valid_o, u)) {
-          Event e{EventKind::kPixel,
-                  cycle,
-                  0,
-                  unsigned(port_field(top_->px_fresh_o, 16 * u, 16)),
-                  port_bit(top_->px_full_o, u),
-                  Bits()};
-          e.record = port_bits(top_->px_data_o, u * L_.pix_w, L_.pix_w);
-          t.pixel[std::size_t(u)].push_back(std::move(e));
-        }
+        if (port_bit(top_->px_valid_o, u))
+          t.pixel[std::size_t(u)].push_back(
+              {EventKind::kPixel, cycle, 0, unsigned(port_field(top_->px_fresh_o, 16 * u, 16)),
+               port_bit(top_->px_full_o, u), port_bits(top_->px_data_o, u * L_.pix_w, L_.pix_w)});
       for (int s = 0; s < npe_ + npix_; ++s)
         if (port_bit(top_->mask_set_valid_o, s)) {
           const auto m =
