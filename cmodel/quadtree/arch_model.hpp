@@ -215,11 +215,10 @@ class ArchModel {
     std::vector<int> lifo;  // stacks: pending windows (item slots)
     // Model-speed device, not hardware: the evaluation of the child the PE offers while its output
     // is full. The hardware re-evaluates it every stalled cycle; evaluate_child depends only on the
-    // held window and the child's number, so the kept result is what it would compute. Valid until
-    // the child leaves the to-do list.
-    bool child_valid = false;
+    // held window and the child's number, so the kept result is what it would compute. Kept
+    // exactly while the child stalls: then stalled_on names its full output FIFO, else it is -1.
     hls::QuadChild<P> child;
-    int stalled_on = -1;  // the full output FIFO the kept (covered) child waits for, else -1
+    int stalled_on = -1;
   };
   struct Pe {
     int stage = 0;
@@ -305,7 +304,6 @@ class ArchModel {
       if (p.work) {
         p.work->lifo.clear();
         p.work->slot = -1;
-        p.work->child_valid = false;
         p.work->stalled_on = -1;
       }
     }
@@ -355,6 +353,7 @@ class ArchModel {
         ++st.pe_stall_cycles[std::size_t(index)];
         return;  // still stalled: the same kept child, its output still full (model speed only)
       }
+      const bool kept = w.stalled_on >= 0;  // w.child is this child's evaluation
       w.stalled_on = -1;
       const QuadItem<P>& held = pool_[std::size_t(w.slot)];
       int q = 0;
@@ -363,10 +362,7 @@ class ArchModel {
       const bool to_lifo = level < pe.last_level;
       const int dest = pe.out_base + (pe.out_by_quadrant ? q : 0);
       const bool room = to_lifo || fifos_[std::size_t(dest)].start_count() < cfg_.fifo_depth;
-      if (!w.child_valid) {
-        hls::evaluate_child(held.w, q, n_, false, w.child, cfg_.side_log2);
-        w.child_valid = true;
-      }
+      if (!kept) hls::evaluate_child(held.w, q, n_, false, w.child, cfg_.side_log2);
       const hls::QuadChild<P>& child = w.child;
       if (child.covered) {
         if (!room) {
@@ -399,7 +395,6 @@ class ArchModel {
         if (cfg_.masks) sets_.push_back({level - 1, int(parent.w.x.value()), int(parent.w.y.value()), q});
       }
       pe.todo &= ~(1u << q);
-      w.child_valid = false;
       if (pe.todo == 0) {
         pe.busy = false;
         release(w.slot);
