@@ -39,6 +39,24 @@ struct ScreenLightPoint {
   std::int32_t priority = 0;
 };
 
+// Stage F's input (seed 002, SPEC F): the scene's convex polyhedra in eye space, the geometric
+// processor's eye frame (metres; the eye at the origin, x to the right, y down, z along the view
+// axis). Face k is the plane n.r = d with the outward unit normal n, so the object's interior is
+// n.r < d for every face. The ray through screen point (Xs, Ys) is r(t) = t c with
+// c = (Xs tan_half_fov, Ys tan_half_fov, 1): its parameter t is the eye depth Z of the point it
+// meets (the projection of stage B, Xs = X / (Z tan_half_fov)).
+struct EyeFace {
+  double nx = 0, ny = 0, nz = 1, d = 0;
+  // The face as drawn: its index in ScreenFrame::polygons (shading and ids come from it), -1 when
+  // the geometric processor did not draw it (a back face, or culled, or clipped away whole).
+  std::int32_t polygon = -1;
+};
+
+struct EyePolyhedron {
+  std::vector<EyeFace> faces;  // every face, drawn or not: back faces bound the ray's exit (tau_out)
+  std::int32_t object = -1;    // the scene object it comes from
+};
+
 // Polygons are in priority order: index 0 has the highest priority (nearest). Engines that
 // resolve visibility by priority use this order; the float reference uses depth and falls back to
 // the order only for exactly equal depths.
@@ -49,6 +67,10 @@ struct ScreenFrame {
   Rgb background{0, 0, 0};
   std::vector<ScreenPolygon> polygons;
   std::vector<ScreenLightPoint> light_points;
+  // Stage F only: the projection's tan(fov/2) and the convex polyhedra of the scene that passed the
+  // culling (empty for a polygon list and for objects that are not convex polyhedra).
+  double tan_half_fov = 1;
+  std::vector<EyePolyhedron> polyhedra;
 };
 
 ScreenFrame load_polygon_list(const std::string& file);

@@ -1,0 +1,54 @@
+// The inverse-parameter pixel processor's data word (seed 002; SPEC F): W bits, two's complement
+// fixed point, the format of every value a PP adds or compares (tau = 1/t, k_x', k_y', Den, k_x,
+// k_y, and the registers RGres, RGh, RGtin, RGtout, RGobj, RGeps). The seed's PP has one W-bit
+// adder SM (flags z: result != 0, s: result < 0) and one comparator Cm (c: A > B); these are the
+// only operations on words, so the kernels use only the functions below.
+//
+//   Word<W>        W bits, kWordIntBits integer bits (sign included), W - kWordIntBits fractional
+//   word_add       SM: a + b wrapped to W bits (the seed's adder has no carry out)
+//   word_greater   Cm: a > b, signed
+//   word_negative  flag s;  word_nonzero  flag z
+//   word_max/min   the largest / smallest code: RGtin's and RGtout's, RGobj's initial values
+//
+// Stage F's kernels take W as a template parameter (the seed's claims are about W: 57 bits to
+// 10 km, 64 to 100 km). For now Word<W> is the type layer's Int<W>, W <= 64; a wider type with the
+// same functions takes W up to 128.
+#pragma once
+
+#include "hls/types/bits.hpp"
+
+CIG_HLS_BEGIN_NAMESPACE
+
+// tau = 1/t with t the eye depth in metres (SPEC F): |tau| < 2^(kWordIntBits - 1) holds every
+// depth beyond 1/128 m; larger values saturate in the host's setup.
+constexpr int kWordIntBits = 8;
+
+template <int W>
+using Word = Int<W>;
+
+template <int W>
+CIG_HLS_INLINE Word<W> word_add(const Word<W>& a, const Word<W>& b) {
+  return wrap<W>(a + b);
+}
+template <int W>
+CIG_HLS_INLINE bool word_greater(const Word<W>& a, const Word<W>& b) {
+  return a > b;
+}
+template <int W>
+CIG_HLS_INLINE bool word_negative(const Word<W>& a) {
+  return a.is_negative();
+}
+template <int W>
+CIG_HLS_INLINE bool word_nonzero(const Word<W>& a) {
+  return a != Word<W>(0);
+}
+template <int W>
+CIG_HLS_INLINE Word<W> word_max() {
+  return Word<W>(Word<W>::max_value);
+}
+template <int W>
+CIG_HLS_INLINE Word<W> word_min() {
+  return Word<W>(Word<W>::min_value);
+}
+
+CIG_HLS_END_NAMESPACE
