@@ -2,6 +2,8 @@
 
 #include "common/error.hpp"
 #include "engine/fan_split.hpp"
+#include "formatter/formatter_twin.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 
 namespace cig {
 
@@ -16,12 +18,45 @@ int samples_per_pixel_side_log2(const std::string& spp, int max_side_log2, const
                    std::string("engine '") + engine + "': spp='" + spp + "' is not " + known + " (samples per pixel)");
 }
 
-EngineRun RasterEngine::render(const ScreenFrame& frame) {
+int subpixel_bits_option(const std::string& value) {
+  for (int b = 0; b <= kMaxSubpixelBits; ++b)
+    if (value == std::to_string(b)) return b;
+  throw InputError("", "--engine-opt",
+                   "subpixel='" + value + "' is not 0.." + std::to_string(kMaxSubpixelBits) +
+                       " (the formatter grid at 1/2^B pixel)");
+}
+
+void RasterEngine::check_formatter_grid(int raster) const {
+  if (subpixel_bits_ < 0) return;
+  const int grid_bits = hls::raster_log2_of(raster) + subpixel_bits_;
+  if (grid_bits > kSeedGridBits)
+    throw InputError("", "--engine-opt",
+                     std::string("engine '") + name() + "': subpixel=" + std::to_string(subpixel_bits_) + " at " +
+                         std::to_string(raster) + " lines needs a " + std::to_string(grid_bits) +
+                         "-bit formatter grid; eq. 1's is " + std::to_string(kSeedGridBits) +
+                         " bits (X = 2048 Xs + 2047), so this engine takes subpixel <= " +
+                         std::to_string(kSeedGridBits - hls::raster_log2_of(raster)) +
+                         " here (the float reference takes finer grids with --snap)");
+}
+
+const ScreenFrame& RasterEngine::on_formatter_grid(const ScreenFrame& frame, ScreenFrame& snapped) const {
+  if (subpixel_bits_ < 0) return frame;
+  check_formatter_grid(frame.raster);
+  snapped = snap_to_formatter_grid(frame, hls::raster_log2_of(frame.raster) + subpixel_bits_);
+  return snapped;
+}
+
+EngineRun RasterEngine::render(const ScreenFrame& input) {
+  ScreenFrame snapped;
+  const ScreenFrame& frame = on_formatter_grid(input, snapped);
   const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
   EngineRun run = render_frame(s.polygons_split > 0 ? s.frame : frame);
   if (s.polygons_split > 0) map_ids_to_source(run.out.ids, s.source);
   run.report["fan_split"] = {
       {"on", fan_split_}, {"polygons_split", s.polygons_split}, {"triangles_added", s.triangles_added}};
+  if (subpixel_bits_ >= 0)
+    run.report["formatter_grid"] = {{"subpixel_bits", subpixel_bits_},
+                                    {"grid_bits", hls::raster_log2_of(frame.raster) + subpixel_bits_}};
   return run;
 }
 
@@ -31,10 +66,12 @@ EngineRun RasterEngine::render_parts(const std::vector<ScreenFrame>& parts) {
   std::vector<std::int32_t> source;  // split polygon of the concatenated parts -> input polygon
   long polygons_split = 0, triangles_added = 0;
   std::int32_t input_offset = 0;
+  std::vector<ScreenFrame> snapped(parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    if (fan_split_) splits[k] = split_nonplanar_polygons(parts[k]);
+    const ScreenFrame& part = on_formatter_grid(parts[k], snapped[k]);
+    if (fan_split_) splits[k] = split_nonplanar_polygons(part);
     const FanSplit& s = splits[k];
-    const ScreenFrame& f = s.polygons_split > 0 ? s.frame : parts[k];
+    const ScreenFrame& f = s.polygons_split > 0 ? s.frame : part;
     split_parts.push_back(&f);
     for (std::size_t i = 0; i < f.polygons.size(); ++i)
       source.push_back(input_offset + (s.polygons_split > 0 ? s.source[i] : std::int32_t(i)));
@@ -62,7 +99,9 @@ EngineRun RasterEngine::render_split_parts(const std::vector<const ScreenFrame*>
   return {};
 }
 
-void RasterEngine::check_frame(const ScreenFrame& frame) const {
+void RasterEngine::check_frame(const ScreenFrame& input) const {
+  ScreenFrame snapped;
+  const ScreenFrame& frame = on_formatter_grid(input, snapped);
   const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
   check_split_frame(s.polygons_split > 0 ? s.frame : frame);
 }

@@ -26,6 +26,9 @@ struct EngineOptions {
   bool fan_split = true;                      // split polygons with non-planar attributes (engine/fan_split.hpp)
   std::map<std::string, std::string> params;  // engine-specific settings (--engine-opt KEY=VALUE)
   int threads = 1;  // workers for one image (strips of lines where the engine splits an image; same bits)
+  // --engine-opt subpixel=B: the formatter grid at 1/2^B pixel (eq. 1 generalised to
+  // g = log2(raster) + B bits, formatter/formatter_twin.hpp); -1: eq. 1 as the seed has it.
+  int subpixel_bits = -1;
 };
 
 struct EngineRun {
@@ -37,6 +40,10 @@ struct EngineRun {
 // (InputError naming the engine and the values it takes).
 int samples_per_pixel_side_log2(const std::string& spp, int max_side_log2, const char* engine);
 
+// The option subpixel=B (the formatter grid at 1/2^B pixel): B, 0..kMaxSubpixelBits (InputError).
+constexpr int kMaxSubpixelBits = 8;
+int subpixel_bits_option(const std::string& value);
+
 class RasterEngine {
  public:
   virtual ~RasterEngine() = default;
@@ -44,13 +51,20 @@ class RasterEngine {
   // Renders a frame: non-planar polygons split into fans first (unless the setting is off), ids
   // mapped back to the input's polygons; the report counts the split ("fan_split").
   EngineRun render(const ScreenFrame& frame);
-  // Checks the engine's options against a raster size before any work (InputError).
-  virtual void check_raster(int /*raster*/) const {}
+  // Checks the engine's options (the formatter grid setting, then the engine's own) against a
+  // raster size before any work (InputError).
+  void check_raster(int raster) const {
+    check_formatter_grid(raster);
+    check_engine_raster(raster);
+  }
   // Checks a frame (as split) against the engine's capacities (the polygons and lights its id
   // fields hold) and raster before any work, so that a command fails before its first output
   // (InputError).
   void check_frame(const ScreenFrame& frame) const;
   void set_fan_split(bool on) { fan_split_ = on; }
+  // The fixed engines format on the 12-bit grid of eq. 1; with a sub-pixel setting their input
+  // is first snapped to the coarser grid it names (g = log2(raster) + B <= 12, else InputError).
+  void set_formatter_grid(int subpixel_bits) { subpixel_bits_ = subpixel_bits; }
 
   // Seed 000's rendering channels: `parts` are N disjoint, contiguous slices of one channel's
   // priority list (part 0 first, each with its own polygon and light indices); each part is
@@ -67,11 +81,16 @@ class RasterEngine {
   // The engine proper, on the frame as split.
   virtual EngineRun render_frame(const ScreenFrame& frame) = 0;
   virtual void check_split_frame(const ScreenFrame& frame) const { check_raster(frame.raster); }
+  virtual void check_engine_raster(int /*raster*/) const {}
   // The parts as split, rasterised and merged; ids of the concatenated split parts.
   virtual EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts);
 
  private:
+  // The frame as the formatter's grid setting leaves it (`frame` itself without a setting).
+  const ScreenFrame& on_formatter_grid(const ScreenFrame& frame, ScreenFrame& snapped) const;
+  void check_formatter_grid(int raster) const;  // InputError when the setting needs more than 12 bits
   bool fan_split_ = true;
+  int subpixel_bits_ = -1;
 };
 
 }  // namespace cig

@@ -18,22 +18,25 @@ hls::UInt<64> bits_of(double x) {
 
 }  // namespace
 
-double snap_grid_coordinate(double s) {
-  double g = std::round(grid_x(s));
-  g = std::min(std::max(g, 0.0), double(kGridMax));
-  return (g - kGridOffset) / kGridScale;
+double snap_grid_coordinate(double s, int grid_bits) {
+  // q = 2^(g - 12) g-bit units per 12-bit unit; X_g = round(2^(g-1) s + 2^(g-1) - 1), and the
+  // 12-bit coordinate of that grid point is (X_g + 1) / q - 1 (g = 12: X itself).
+  const double q = std::ldexp(1.0, grid_bits - kSeedGridBits);
+  const double xg = std::round(q * kGridScale * s + (q * (kGridOffset + 1) - 1));
+  const double x = std::min(std::max((xg + 1) / q - 1, 0.0), double(kGridMax));
+  return (x - kGridOffset) / kGridScale;
 }
 
-ScreenFrame snap_to_formatter_grid(const ScreenFrame& f) {
+ScreenFrame snap_to_formatter_grid(const ScreenFrame& f, int grid_bits) {
   ScreenFrame s = f;
   for (auto& p : s.polygons)
     for (auto& v : p.vertices) {
-      v.xs = snap_grid_coordinate(v.xs);
-      v.ys = snap_grid_coordinate(v.ys);
+      v.xs = snap_grid_coordinate(v.xs, grid_bits);
+      v.ys = snap_grid_coordinate(v.ys, grid_bits);
     }
   for (auto& l : s.light_points) {
-    l.xs = snap_grid_coordinate(l.xs);
-    l.ys = snap_grid_coordinate(l.ys);
+    l.xs = snap_grid_coordinate(l.xs, grid_bits);
+    l.ys = snap_grid_coordinate(l.ys, grid_bits);
     double d = std::min(std::round(kGridScale * l.ds), kMaxLightDiameterUnits);
     l.ds = d / kGridScale;
   }

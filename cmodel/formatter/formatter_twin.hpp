@@ -26,11 +26,22 @@ inline double grid_x(double xs) { return kGridScale * xs + kGridOffset; }
 // Light-point diameter in grid units, D = 2048*Ds clamped to 0..7 (eq. 1).
 constexpr double kMaxLightDiameterUnits = hls::kMaxLightDiameter;
 
-// Snaps positions to the formatter grid (round half away from zero, clamp 0..4095) and light
-// diameters to whole units 0..7, leaving everything else as it is: the float reference on a
-// snapped frame sees exactly the positions a fixed-point engine sees.
-ScreenFrame snap_to_formatter_grid(const ScreenFrame& f);
-double snap_grid_coordinate(double s);  // Xs or Ys -> snapped Xs or Ys
+// The formatter grid's width in bits per axis: eq. 1's X = 2048 Xs + 2047 is the seed's 12-bit grid
+// (1/8 pixel at 512 lines). The sub-pixel knob (--engine-opt subpixel=B: 1/2^B pixel) generalises
+// eq. 1 to a g-bit grid, X_g = 2^(g-1) Xs + 2^(g-1) - 1, g = log2(raster) + B. The fixed engines'
+// widths are derived for g <= 12 (a coarser grid is a subset of the 12-bit one: X = 2^(12-g)(X_g + 1)
+// - 1 is exact there); the float reference takes finer grids too.
+constexpr int kSeedGridBits = hls::kGridScaleLog2 + 1;
+constexpr int kMaxGridBits = 20;  // the float reference's finest grid (1/2^11 pixel at 512 lines)
+
+// Snaps positions to the g-bit formatter grid (round half away from zero of eq. 1 at g bits), then
+// clamps them to the 12-bit grid's 0..4095 (so that every grid keeps the seed's screen edges), and
+// light diameters to whole 12-bit units 0..7, leaving everything else as it is: the float reference
+// on a snapped frame sees exactly the positions a fixed-point engine sees. A snapped coordinate is
+// a dyadic rational with at most g + 1 significant bits: exact in binary64, and the formatter
+// kernel maps it to the same X (eq. 1 of an exact integer).
+ScreenFrame snap_to_formatter_grid(const ScreenFrame& f, int grid_bits = kSeedGridBits);
+double snap_grid_coordinate(double s, int grid_bits = kSeedGridBits);  // Xs or Ys -> snapped Xs or Ys
 
 double twin_grid(double s);        // X or Y from Xs or Ys
 double twin_intensity(double is);  // I from Is

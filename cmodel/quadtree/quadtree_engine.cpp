@@ -232,7 +232,7 @@ class QuadEngine : public RasterEngine {
   QuadEngine(const QuadOptions& o, const char* name, const char* format)
       : name_(name), format_(format), options_(o), pipeline_(o, name, format) {}
   const char* name() const override { return name_; }
-  void check_raster(int raster) const override { pipeline_.check_raster(raster); }
+  void check_engine_raster(int raster) const override { pipeline_.check_raster(raster); }
 
  protected:
   EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame); }

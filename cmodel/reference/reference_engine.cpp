@@ -1,6 +1,7 @@
 #include "reference/reference_engine.hpp"
 
 #include "common/error.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 #include "reference/reference_raster.hpp"
 #include "reference/sample_lattice.hpp"
 
@@ -28,7 +29,21 @@ class FloatEngine : public RasterEngine {
   const char* name() const override { return "float"; }
 
  protected:
+  // The grid the snapped reference rounds to: eq. 1's, or the one subpixel=B names (InputError
+  // beyond kMaxGridBits).
+  int snap_grid_bits(int raster) const {
+    if (options_.subpixel_bits < 0) return kSeedGridBits;
+    const int grid_bits = hls::raster_log2_of(raster) + options_.subpixel_bits;
+    if (grid_bits > kMaxGridBits)
+      throw InputError("", "--engine-opt",
+                       "engine 'float': subpixel=" + std::to_string(options_.subpixel_bits) + " at " +
+                           std::to_string(raster) + " lines needs a " + std::to_string(grid_bits) +
+                           "-bit grid; the reference snaps to at most " + std::to_string(kMaxGridBits) + " bits");
+    return grid_bits;
+  }
+  void check_engine_raster(int raster) const override { snap_grid_bits(raster); }
   void check_split_frame(const ScreenFrame& frame) const override {
+    snap_grid_bits(frame.raster);
     if (frame.polygons.size() > kMaxReferencePolygons || frame.light_points.size() > kMaxReferencePolygons)
       throw InputError("", "polygons",
                        "the float engine takes at most " + std::to_string(kMaxReferencePolygons) +
@@ -40,10 +55,12 @@ class FloatEngine : public RasterEngine {
     check_split_frame(frame);
     ReferenceStats st;
     EngineRun run;
-    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_, options_.threads);
+    const int grid_bits = snap_grid_bits(frame.raster);
+    if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_, options_.threads, grid_bits);
     else run.out = render_reference(frame, st, visibility_, side_, options_.threads);
     run.report["engine"] = "float";
     run.report["snapped"] = options_.snap;
+    if (options_.snap) run.report["grid_bits"] = grid_bits;
     run.report["visibility"] = visibility_ == Visibility::kPriority ? "priority" : "depth";
     run.report["samples_per_pixel"] = side_ * side_;
     run.report["polygons"] = st.polygons;

@@ -156,8 +156,8 @@ RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats, Vi
 }
 
 RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats, Visibility visibility,
-                                     int samples_per_side, int threads) {
-  return render(snap_to_formatter_grid(exact), exact, stats, visibility, samples_per_side, threads);
+                                     int samples_per_side, int threads, int grid_bits) {
+  return render(snap_to_formatter_grid(exact, grid_bits), exact, stats, visibility, samples_per_side, threads);
 }
 
 namespace {

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 
+#include "formatter/formatter_twin.hpp"
 #include "frame/screen_frame.hpp"
 #include "image/raster_image.hpp"
 
@@ -49,9 +50,10 @@ RasterImage render_reference(const ScreenFrame& frame, ReferenceStats& stats,
 // depth from the exact vertices of `exact` (the same polygons unsnapped). Snapping X and Y while
 // keeping each vertex's Z would tilt the 1/Z plane of every polygon by a different amount, so
 // near-coplanar surfaces (a marking 5 cm above a runway) would z-fight; the depth of a point of a
-// polygon does not depend on where the formatter rounds its vertices.
+// polygon does not depend on where the formatter rounds its vertices. `grid_bits`: the formatter
+// grid snapped to (formatter/formatter_twin.hpp; 12 = eq. 1).
 RasterImage render_reference_snapped(const ScreenFrame& exact, ReferenceStats& stats,
                                      Visibility visibility = Visibility::kDepth, int samples_per_side = 4,
-                                     int threads = 1);
+                                     int threads = 1, int grid_bits = kSeedGridBits);
 
 }  // namespace cig

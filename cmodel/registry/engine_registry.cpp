@@ -24,9 +24,31 @@ std::unique_ptr<RasterEngine> make_named_engine(const std::string& name, const E
 
 }  // namespace
 
+namespace {
+
+// subpixel=B is every engine's: it takes it out of the engine-specific settings. The float
+// reference snaps to that grid itself (it needs --snap: unsnapped, it has no grid); the fixed
+// engines get their input snapped to it before the formatter (RasterEngine::set_formatter_grid).
+EngineOptions take_subpixel_option(const std::string& name, const EngineOptions& options) {
+  EngineOptions o = options;
+  const auto it = o.params.find("subpixel");
+  if (it == o.params.end()) return o;
+  o.subpixel_bits = subpixel_bits_option(it->second);
+  o.params.erase(it);
+  if (name == "float" && !o.snap)
+    throw InputError("", "--engine-opt",
+                     "engine 'float': subpixel=" + std::to_string(o.subpixel_bits) +
+                         " sets the grid the reference snaps to; add --snap (or use --reference float-snap)");
+  return o;
+}
+
+}  // namespace
+
 std::unique_ptr<RasterEngine> make_engine(const std::string& name, const EngineOptions& options) {
-  if (auto engine = make_named_engine(name, options)) {
-    engine->set_fan_split(options.fan_split);
+  const EngineOptions o = take_subpixel_option(name, options);
+  if (auto engine = make_named_engine(name, o)) {
+    engine->set_fan_split(o.fan_split);
+    if (name != "float") engine->set_formatter_grid(o.subpixel_bits);
     return engine;
   }
   std::string known;

@@ -482,7 +482,7 @@ class SegmentEngine : public RasterEngine {
     pipeline_.set_threads(threads);
   }
   const char* name() const override { return name_; }
-  void check_raster(int raster) const override {
+  void check_engine_raster(int raster) const override {
     ScreenFrame f;
     f.raster = raster;
     SegmentPipeline<P>::check_frame(f, side_log2_);

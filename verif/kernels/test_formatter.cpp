@@ -299,6 +299,33 @@ TEST(Formatter, GridMatchesCModelOnRandomInputs) {
   }
 }
 
+// The sub-pixel knob (--engine-opt subpixel=B): a g-bit grid, g < 12, is a subset of eq. 1's
+// 12-bit grid (X = 2^(12-g) (X_g + 1) - 1), so the C model snaps to it before the formatter and the
+// kernel keeps every snapped coordinate exactly; the snap moves a position by at most half a
+// g-bit unit (2^(11-g) units) on screen, and a finer grid (the float reference's) by less.
+TEST(Formatter, CoarserGridsAreSubsetsOfEq1TheKernelKeeps) {
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> screen(-0.99, 0.99);  // off the clamped edges (tested below)
+  for (int g = 9; g <= 14; ++g) {
+    const double unit = std::ldexp(1.0, kSeedGridBits - g);  // one g-bit unit in 12-bit units
+    for (int t = 0; t < 20000; ++t) {
+      const double s = t % 2 ? screen(rng) : (std::floor(screen(rng) * 1024) + 0.5) / 1024;  // ties too
+      const double snapped = snap_grid_coordinate(s, g);
+      const double x = grid_x(snapped);
+      ASSERT_LE(std::fabs(x - grid_x(s)), 0.5 * unit) << "g " << g << std::hexfloat << " s " << s;
+      if (g > kSeedGridBits) continue;
+      ASSERT_EQ(double(kx(snapped)), x) << "g " << g << std::hexfloat << " s " << s;
+      ASSERT_EQ(std::fmod(x + 1, unit), 0.0) << "g " << g << " X " << x;
+    }
+    EXPECT_EQ(grid_x(snap_grid_coordinate(-1.0, g)), 0.0);  // the screen edges stay where eq. 1 has them
+    EXPECT_EQ(grid_x(snap_grid_coordinate(1.0, g)), double(kGridMax));
+  }
+  for (int t = 0; t < 20000; ++t) {  // 12 bits: eq. 1 itself
+    const double s = screen(rng);
+    ASSERT_EQ(double(kx(s)), grid_x(snap_grid_coordinate(s, kSeedGridBits)));
+  }
+}
+
 // ---- Z ----------------------------------------------------------------------------------------
 
 // Every e8m7 code: its exact value maps to itself; the midpoint to the next code goes to the even

@@ -21,6 +21,7 @@ ALLOWED = {
     "hls/pixel": {"hls/types", "hls/formatter"},
     "hls/segment": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/quadtree": {"hls/types", "hls/formatter", "hls/pixel"},
+    "hls/invparam": {"hls/types"},  # stage F works from eye-space planes, not from the formatter
     "hls/manager": {"hls/types"},                                              # stage A (seed 000)
     # C model, in pipeline order
     "cmodel/common": set(),
@@ -32,7 +33,8 @@ ALLOWED = {
     "cmodel/formatter": {"cmodel/common", "cmodel/scene", "cmodel/frame", "hls/types",
                          "hls/formatter"},                                     # stage C twin
     "cmodel/image": {"cmodel/common"},
-    "cmodel/engine": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/image"},
+    "cmodel/engine": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/image", "cmodel/formatter",
+                      "hls/types", "hls/formatter"},  # every engine's front: fan split, formatter grid
     "cmodel/pixel": {"hls/types", "hls/formatter", "hls/pixel"},            # D, E: shared plane twin
     "cmodel/reference": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                          "cmodel/image", "cmodel/engine", "hls/types", "hls/formatter"},
@@ -42,6 +44,9 @@ ALLOWED = {
     "cmodel/quadtree": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                         "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
                         "hls/pixel", "hls/quadtree"},                                       # stage E
+    "cmodel/invparam": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter", "cmodel/image",
+                        "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter", "hls/pixel",
+                        "hls/invparam"},                                                    # stage F
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree"},     # every engine
     "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",

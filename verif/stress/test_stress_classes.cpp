@@ -17,7 +17,10 @@
 #include <gtest/gtest.h>
 
 #include "cli/stress_lists.hpp"
+#include "common/error.hpp"
 #include "engine/engine.hpp"
+#include "formatter/formatter_twin.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 #include "image/image_compare.hpp"
 #include "registry/engine_registry.hpp"
 
@@ -89,12 +92,55 @@ TEST_P(StressClasses, EveryLatticeWithinTheBound) {
   }
 }
 
+// The formatter grid as a knob (subpixel=B, 1/2^B pixel): one and two bits coarser than eq. 1's
+// grid at the list's raster, both bit-accurate engines and the quadtree's twin take exactly the
+// samples of the reference snapped to the same grid, within the bound (the vertices are on that
+// grid, hence on the 12-bit one), on every class (seed 1).
+TEST_P(StressClasses, CoarserFormatterGridsWithinTheBound) {
+  const std::string name = GetParam();
+  const ScreenFrame f = cli::make_stress_list(name, 1);
+  const int seed_bits = kSeedGridBits - hls::raster_log2_of(f.raster);
+  for (int b : {seed_bits - 2, seed_bits - 1}) {
+    const std::string sub = std::to_string(b);
+    const EngineRun reference = run(f, "float", true, {{"visibility", "priority"}, {"subpixel", sub}});
+    EXPECT_EQ(reference.report.at("grid_bits").get<int>(), kSeedGridBits - seed_bits + b);
+    for (const char* e : {"segment", "quadtree", "quadtree-double"}) {
+      const EngineRun got = run(f, e, false, {{"subpixel", sub}});
+      EXPECT_EQ(got.report.at("formatter_grid").at("subpixel_bits").get<int>(), b);
+      const Difference d = difference(got, reference);
+      EXPECT_EQ(d.ids, 0) << name << " subpixel " << b << " " << e;
+      EXPECT_LE(d.max_abs, kBoundLsb) << name << " subpixel " << b << " " << e;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllClasses, StressClasses, testing::ValuesIn(cli::stress_class_names()),
                          [](const testing::TestParamInfo<std::string>& i) {
                            std::string n = i.param;
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });
+
+// subpixel=B at eq. 1's own grid changes nothing; a coarser grid moves the image; a grid finer than
+// 12 bits is refused by the fixed engines (their widths are derived for 12) and taken by the
+// snapped reference only; bad values are refused.
+TEST(FormatterGrid, SeedGridIsEq1CoarserMovesFinerIsRefused) {
+  const ScreenFrame f = cli::make_stress_list("slivers", 1);
+  const int seed_bits = kSeedGridBits - hls::raster_log2_of(f.raster);
+  for (const char* e : {"segment", "quadtree"}) {
+    const EngineRun plain = run(f, e);
+    const EngineRun same = run(f, e, false, {{"subpixel", std::to_string(seed_bits)}});
+    const EngineRun coarse = run(f, e, false, {{"subpixel", std::to_string(seed_bits - 2)}});
+    EXPECT_EQ(plain.out.image.rgb, same.out.image.rgb) << e;
+    EXPECT_EQ(plain.out.ids.id, same.out.ids.id) << e;
+    EXPECT_NE(plain.out.image.rgb, coarse.out.image.rgb) << e;
+    EXPECT_THROW(run(f, e, false, {{"subpixel", std::to_string(seed_bits + 1)}}), InputError) << e;
+  }
+  EXPECT_NO_THROW(run(f, "float", true, {{"subpixel", std::to_string(seed_bits + 1)}}));
+  EXPECT_THROW(run(f, "float", false, {{"subpixel", "2"}}), InputError);  // no grid without --snap
+  EXPECT_THROW(run(f, "segment", false, {{"subpixel", "x"}}), InputError);
+  EXPECT_THROW(run(f, "segment", false, {{"subpixel", "9"}}), InputError);
+}
 
 // The snap-nonconvex class is what it says: every polygon is convex as given and not once snapped.
 TEST(StressLists, SnapNonConvexPolygonsAreConvexOnlyBeforeTheSnap) {
