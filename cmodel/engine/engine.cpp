@@ -46,11 +46,12 @@ const ScreenFrame& RasterEngine::on_formatter_grid(const ScreenFrame& frame, Scr
   return snapped;
 }
 
-EngineRun RasterEngine::render(const ScreenFrame& input) {
-  ScreenFrame snapped;
-  const ScreenFrame& frame = on_formatter_grid(input, snapped);
+// The fan split decides on the positions as given (as without a grid setting), then the pieces
+// are snapped: a triangle of the fan keeps its polygon's vertices, so it snaps to the same points.
+EngineRun RasterEngine::render(const ScreenFrame& frame) {
   const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
-  EngineRun run = render_frame(s.polygons_split > 0 ? s.frame : frame);
+  ScreenFrame snapped;
+  EngineRun run = render_frame(on_formatter_grid(s.polygons_split > 0 ? s.frame : frame, snapped));
   if (s.polygons_split > 0) map_ids_to_source(run.out.ids, s.source);
   run.report["fan_split"] = {
       {"on", fan_split_}, {"polygons_split", s.polygons_split}, {"triangles_added", s.triangles_added}};
@@ -68,10 +69,9 @@ EngineRun RasterEngine::render_parts(const std::vector<ScreenFrame>& parts) {
   std::int32_t input_offset = 0;
   std::vector<ScreenFrame> snapped(parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const ScreenFrame& part = on_formatter_grid(parts[k], snapped[k]);
-    if (fan_split_) splits[k] = split_nonplanar_polygons(part);
+    if (fan_split_) splits[k] = split_nonplanar_polygons(parts[k]);
     const FanSplit& s = splits[k];
-    const ScreenFrame& f = s.polygons_split > 0 ? s.frame : part;
+    const ScreenFrame& f = on_formatter_grid(s.polygons_split > 0 ? s.frame : parts[k], snapped[k]);
     split_parts.push_back(&f);
     for (std::size_t i = 0; i < f.polygons.size(); ++i)
       source.push_back(input_offset + (s.polygons_split > 0 ? s.source[i] : std::int32_t(i)));
@@ -99,9 +99,8 @@ EngineRun RasterEngine::render_split_parts(const std::vector<const ScreenFrame*>
   return {};
 }
 
-void RasterEngine::check_frame(const ScreenFrame& input) const {
-  ScreenFrame snapped;
-  const ScreenFrame& frame = on_formatter_grid(input, snapped);
+void RasterEngine::check_frame(const ScreenFrame& frame) const {
+  check_formatter_grid(frame.raster);
   const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
   check_split_frame(s.polygons_split > 0 ? s.frame : frame);
 }
