@@ -129,7 +129,7 @@ void eye_polyhedra(const Scene& scene, const WorldDatabase& db, const ChannelVie
   std::vector<std::int32_t> slot(scene.objects.size(), -1);  // object -> its entry in f.polyhedra
   for (const PriorityEntry& entry : list.objects) {
     const std::uint32_t o = entry.object;
-    if (!scene.objects[o].polyhedron || slot[o] >= 0) continue;
+    if (!scene.objects[o].polyhedron || scene.objects[o].hull.faces.empty() || slot[o] >= 0) continue;
     slot[o] = std::int32_t(f.polyhedra.size());
     EyePolyhedron p;
     p.object = std::int32_t(o);
