@@ -120,6 +120,42 @@ struct ChannelGeometry {
   }
 };
 
+// Stage F's input: every convex polyhedron of the list, once, in the order of its first entry, its
+// faces as eye-space planes of stage F's frame (y down: the screen's Ys), each with the first
+// polygon of f.polygons drawn on it. A world plane n.p = D becomes, for e = R (p - eye),
+// (R n).e = D - n.eye; the y flip changes n and e alike.
+void eye_polyhedra(const Scene& scene, const WorldDatabase& db, const ChannelView& view, const PriorityList& list,
+                   ScreenFrame& f) {
+  std::vector<std::int32_t> slot(scene.objects.size(), -1);  // object -> its entry in f.polyhedra
+  for (const PriorityEntry& entry : list.objects) {
+    const std::uint32_t o = entry.object;
+    if (!scene.objects[o].polyhedron || scene.objects[o].hull.faces.empty() || slot[o] >= 0) continue;
+    slot[o] = std::int32_t(f.polyhedra.size());
+    EyePolyhedron p;
+    p.object = std::int32_t(o);
+    const WorldObject& w = db.objects[o];
+    for (std::size_t k = 0; k < w.hull_normal.size(); ++k) {
+      const glm::dvec3 n = view.world_to_eye * w.hull_normal[k];
+      EyeFace face;
+      face.nx = n.x;
+      face.ny = -n.y;
+      face.nz = n.z;
+      face.d = w.hull_offset[k] - glm::dot(w.hull_normal[k], view.eye);
+      p.faces.push_back(face);
+    }
+    f.polyhedra.push_back(std::move(p));
+  }
+  for (std::size_t i = 0; i < f.polygons.size(); ++i) {
+    const ScreenPolygon& sp = f.polygons[i];
+    const std::int32_t s = slot[std::size_t(sp.object)];
+    if (s < 0) continue;
+    const Polyhedron& hull = scene.objects[std::size_t(sp.object)].hull;
+    EyeFace& face = f.polyhedra[std::size_t(s)]
+                        .faces[std::size_t(hull.face_of[std::size_t(sp.subobject)][std::size_t(sp.polygon)])];
+    if (face.polygon < 0) face.polygon = std::int32_t(i);
+  }
+}
+
 }  // namespace
 
 ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const ChannelView& view,
@@ -146,6 +182,8 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
     for (std::uint32_t si : list.run(entry))
       g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
   }
+  f.tan_half_fov = view.tan_half_fov;
+  if (db.has_polyhedra) eye_polyhedra(scene, db, view, list, f);
   stats.polygons_out += f.polygons.size();
   stats.light_points_out += f.light_points.size();
   stats.ms += ms_since(t0);

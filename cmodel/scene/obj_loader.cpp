@@ -86,6 +86,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& file) {
       }
       if (!rule.empty()) fail(file, line, rule);
       mesh.faces.push_back(std::move(face));
+      mesh.face_lines.push_back(line);
     }
     // Other statements (vt, vn, g, o, s, usemtl, mtllib, l, p) carry nothing this model uses.
   }

@@ -16,6 +16,7 @@ namespace cig {
 struct ObjMesh {
   std::vector<glm::dvec3> vertices;
   std::vector<std::vector<std::uint32_t>> faces;  // zero-based, counter-clockwise from the front
+  std::vector<std::size_t> face_lines;            // the line of each face's 'f' statement
   std::size_t degenerate_faces = 0;               // zero-area faces skipped
 };
 

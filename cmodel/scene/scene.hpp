@@ -60,6 +60,25 @@ struct Subobject {
   std::vector<Polygon> polygons;
   double crease_angle_deg = 50;  // vertex normals average only faces within this angle
   glm::dvec3 centre{0};          // object coordinates; used for depth sorting of subobjects
+  // An 'obj' subobject's model file and the line of each polygon's 'f' statement, so that errors
+  // found after loading (the polyhedron checks) can name them; empty for inline geometry.
+  std::string model;
+  std::vector<std::size_t> model_lines;
+};
+
+// One face plane of a convex polyhedron (stage F's input, SPEC F): n.r = offset in object
+// coordinates, n the outward unit normal, so the interior is n.r < offset. Coplanar polygons
+// (a triangulated box side) share one face.
+struct PolyhedronFace {
+  glm::dvec3 normal{0, 0, 1};
+  double offset = 0;
+};
+
+struct Polyhedron {
+  std::vector<PolyhedronFace> faces;
+  // face_of[subobject][polygon]: the face each polygon lies on.
+  std::vector<std::vector<std::int32_t>> face_of;
+  bool reoriented = false;  // the polygons wound inward and were reversed at load
 };
 
 struct LightPoint {
@@ -91,6 +110,9 @@ struct Object {
   glm::dvec3 sphere_centre{0};  // object coordinates
   double sphere_radius = 0;
   bool sphere_given = false;
+  // A closed convex polyhedron ("polyhedron": true), checked at load: its faces go to stage F.
+  bool polyhedron = false;
+  Polyhedron hull;
 };
 
 struct Keyframe {

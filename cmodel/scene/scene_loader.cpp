@@ -8,6 +8,7 @@
 #include "common/json_reader.hpp"
 #include "scene/obj_loader.hpp"
 #include "scene/polygon_checks.hpp"
+#include "scene/polyhedron.hpp"
 
 namespace cig {
 
@@ -132,6 +133,7 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const
     const glm::dvec3 offset = n.find("offset") ? read_point(n.at("offset")) : glm::dvec3(0);
     const double scale = n.find("scale") ? n.at("scale").number(kMinModelScale, kMaxModelScale) : 1.0;
     const ObjMesh mesh = read_model(n.at("obj"), scene_file, limits);
+    s.model = n.at("obj").string();
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
       const glm::dvec3 v = offset + scale * mesh.vertices[i];
       if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kMaxWorldCoordinate)
@@ -139,8 +141,10 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const
                            std::to_string(kMaxWorldCoordinate) + " m");
       s.vertices.push_back(v);
     }
-    for (const auto& f : mesh.faces) {
+    for (std::size_t fi = 0; fi < mesh.faces.size(); ++fi) {
+      const auto& f = mesh.faces[fi];
       if (f.size() > std::size_t(kMaxSceneVertices)) n.fail("model face has too many vertices");
+      s.model_lines.push_back(mesh.face_lines[fi]);
       Polygon p;
       p.indices = f;
       p.colour = d.colour;
@@ -179,9 +183,23 @@ LightPoint read_light_point(const JsonNode& n) {
   return l;
 }
 
+// A "polyhedron": true object's rules (scene/polyhedron.hpp), reported at the polygon that breaks
+// them: its JSON path, or for a model the 'obj' field with the model's file and line.
+void check_polyhedron(const JsonNode& n, Object& o) {
+  const PolyhedronIssue issue = build_polyhedron(o);
+  if (issue.rule.empty()) return;
+  const std::string rule = (o.name.empty() ? std::string("object") : "object '" + o.name + "'") + ": " + issue.rule;
+  if (issue.subobject < 0) n.fail(rule);
+  const JsonNode sub = n.at("subobjects")[std::size_t(issue.subobject)];
+  const Subobject& s = o.subobjects[std::size_t(issue.subobject)];
+  if (s.model.empty()) sub.at("polygons")[std::size_t(issue.polygon)].fail(rule);
+  sub.at("obj").fail("model '" + s.model + "' line " + std::to_string(s.model_lines[std::size_t(issue.polygon)]) +
+                     ": " + rule);
+}
+
 Object read_object(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
   n.allow_only({"name", "position", "heading", "pitch", "roll", "layer", "subobject_order", "bounding_sphere",
-                "subobjects", "light_points"});
+                "subobjects", "light_points", "polyhedron"});
   Object o;
   if (auto nm = n.find("name")) o.name = nm->string();
   if (auto l = n.find("layer")) o.layer = int(l->integer(-8, 8));
@@ -201,6 +219,8 @@ Object read_object(const JsonNode& n, const std::string& scene_file, const Scene
     for (std::size_t i = 0; i < nl; ++i) o.light_points.push_back(read_light_point((*lps)[i]));
   }
   if (o.subobjects.empty() && o.light_points.empty()) n.fail("an object needs at least one subobject or light point");
+  o.polyhedron = n.boolean_or("polyhedron", false);
+  if (o.polyhedron) check_polyhedron(n, o);
 
   // Bounding sphere in object coordinates: the scene manager culls with it, so it must enclose
   // every vertex and light point (a visible object must never be flagged invisible).

@@ -84,6 +84,12 @@ WorldDatabase build_world_database(const Scene& scene) {
     w.radius = o.sphere_radius;
     w.layer = o.layer;
     w.subobjects_by_distance = o.subobjects_by_distance;
+    for (const auto& f : o.hull.faces) {
+      const glm::dvec3 n = rot * f.normal;
+      w.hull_normal.push_back(n);
+      w.hull_offset.push_back(f.offset + glm::dot(n, o.pose.position));
+    }
+    db.has_polyhedra = db.has_polyhedra || o.polyhedron;
     db.objects.push_back(std::move(w));
   }
   return db;

@@ -31,10 +31,15 @@ struct WorldObject {
   double radius = 0;
   int layer = 0;
   bool subobjects_by_distance = false;
+  // A convex polyhedron's face planes in world coordinates (Object::hull placed): outward unit
+  // normal, hull_normal . p = hull_offset on the face; empty for other objects.
+  std::vector<glm::dvec3> hull_normal;
+  std::vector<double> hull_offset;
 };
 
 struct WorldDatabase {
   std::vector<WorldObject> objects;
+  bool has_polyhedra = false;  // some object is a convex polyhedron (stage F's input)
 };
 
 WorldDatabase build_world_database(const Scene& scene);

@@ -15,7 +15,7 @@ namespace {
 
 TEST(SceneLoader, ReadmeExamplesParse) {
   const auto blocks = test::json_blocks(test::read_file(test::source_path("scenes/README.md")));
-  ASSERT_EQ(blocks.size(), 2u);
+  ASSERT_EQ(blocks.size(), 3u);  // the third, a polyhedron example: test_polyhedra.cpp
   Scene s = parse_scene(blocks[0], "scenes/README.md#cig-scene");
   EXPECT_EQ(s.raster, 512);
   ASSERT_EQ(s.channels.size(), 3u);
@@ -38,7 +38,7 @@ TEST(SceneLoader, ReadmeExamplesParse) {
   // Background defaults to the fog colour but is given here.
   EXPECT_DOUBLE_EQ(s.background.r, 0.45);
 
-  ScreenFrame f = parse_polygon_list(blocks[1], "scenes/README.md#cig-polys");
+  ScreenFrame f = parse_polygon_list(blocks[2], "scenes/README.md#cig-polys");
   EXPECT_EQ(f.raster, 64);
   ASSERT_EQ(f.polygons.size(), 2u);
   EXPECT_EQ(f.polygons[1].vertices.size(), 4u);
