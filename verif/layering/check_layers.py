@@ -22,6 +22,7 @@ ALLOWED = {
     "hls/segment": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/quadtree": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/manager": {"hls/types"},                                              # stage A (seed 000)
+    "hls/invparam": {"hls/types"},                                             # stage F (seed 002)
     # C model, in pipeline order
     "cmodel/common": set(),
     "cmodel/scene": {"cmodel/common"},
@@ -42,6 +43,7 @@ ALLOWED = {
     "cmodel/quadtree": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                         "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
                         "hls/pixel", "hls/quadtree"},                                       # stage E
+    "cmodel/invparam": {"hls/types", "hls/invparam"},                         # stage F (seed 002)
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree"},     # every engine
     "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
