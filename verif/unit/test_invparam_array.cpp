@@ -192,6 +192,45 @@ TEST(InvparamTokens, FieldsRoundTrip) {
   EXPECT_TRUE(command_as(pln_command(false, true)));
 }
 
+// The HLS top (57-bit words): a token leaves one clock later, unchanged except T_Pln's word 3,
+// which gains step_y; the T_Col's clock 2 drives VT with the previous column's result.
+TEST(InvparamPixelProcessor, TopPassesTokensOneClockLater) {
+  using namespace cig::hls;
+  constexpr int W = kPpTopWordBits;
+  PpState<W> st;
+  pp_reset(st, Word<W>(-4));
+  const Word<W> zero = word_zero<W>();
+  const Word<W> codes[] = {command_word<W>(pln_command(true, false)),
+                           Word<W>(5),
+                           Word<W>(100),
+                           par_word<W>(ParCode(0x42)),
+                           command_word<W>(Command(kCmdObj)),
+                           zero,
+                           zero,
+                           zero,
+                           command_word<W>(Command(kCmdCol)),
+                           par_word<W>(ParCode(0x99)),
+                           zero,
+                           zero};
+  Word<W> previous = zero;
+  int vt = 0;
+  for (int t = 0; t < 13; ++t) {
+    const Word<W> in = t < 12 ? codes[t] : zero;
+    const PpOutputs<W> o = invparam_pixel_processor_top(st, in, PpCtrl{t % 4 == 0});
+    EXPECT_EQ(o.output.value(), t == 3 ? 105 : previous.value()) << "clock " << t;
+    EXPECT_EQ(o.ctrl.start, t > 0 && (t - 1) % 4 == 0) << "clock " << t;
+    if (o.vt.valid) {
+      ++vt;
+      EXPECT_EQ(t, 9);
+      EXPECT_EQ(o.vt.par.value(), 0x42u);  // the face seen at tau = 105
+      EXPECT_EQ(o.vt.obj.value(), 105);
+    }
+    previous = in;
+  }
+  EXPECT_EQ(vt, 1);
+  EXPECT_EQ(st.RGpar.value(), 0x99u);  // the next column starts on its background
+}
+
 // The frame's clocks from the simulation: the seed's formula exactly, over random m, n, N_n, P.
 TEST(InvparamArray, FrameClocksEqualSeedFormula) {
   std::mt19937_64 rng(2002);
