@@ -2,6 +2,8 @@
 //          [--archs LIST] [--stream K] [--perf-aspect R] [--perf-rotation 0|45] [--fifo D]
 //          [--seed S] [--threads T] [--report FILE.json]
 //          [--table nArch|windows|performance|all]
+// cig arch --processor invparam [--faces-per-object M] [--objects N1,N2,..] [--columns P]
+//          [--pps N_n] [--clock-ns T] [--widths W1,W2,..] [--report FILE.json]
 // Seed 004's architecture analysis, measured with the project's kernels and cycle model
 // (cmodel/quadtree/arch_analysis.hpp; discussion and results: hls/quadtree/ARCHITECTURES.md):
 //   nArch        eq. 10's N_arch for n = 10 beside Architecture::pe_count and the seed's table;
@@ -50,6 +52,16 @@ void ArchCommand::add_to(CLI::App& app) {
   sub->add_option("--threads", threads, "worker threads (default: cores)");
   sub->add_option("--report", report_file, "write every table as JSON");
   sub->add_option("--table", table, "nArch, windows, performance or all (default all)");
+  sub->add_option("--processor", processor,
+                  "quadtree (seed 004, default) or invparam (seed 002's systolic array: frame time, faces/s)");
+  sub->add_option("--faces-per-object", faces_per_object, "invparam: m, faces per object (default 6)");
+  sub->add_option("--objects", objects, "invparam: n, objects in the scene (default 100,1000,10000,100000)")
+      ->delimiter(',');
+  sub->add_option("--columns", columns, "invparam: P, columns (default 512)");
+  sub->add_option("--pps", pps, "invparam: N_n, pixel processors = samples a column (default 512)");
+  sub->add_option("--clock-ns", clock_ns, "invparam: t_t, the PP's clock period in ns (default 3)");
+  sub->add_option("--widths", widths, "invparam: mean object widths in columns (default 10,50,100,250,500)")
+      ->delimiter(',');
 }
 
 namespace {
@@ -399,6 +411,11 @@ void ArchCommand::check_options() {
 }
 
 int ArchCommand::run() {
+  if (processor != "quadtree" && processor != "invparam")
+    throw InputError("", "--processor", "'" + processor + "' is not one of quadtree, invparam");
+  if (processor == "invparam") return run_invparam();
+  for (const char* o : {"--faces-per-object", "--objects", "--columns", "--pps", "--clock-ns", "--widths"})
+    if (sub->count(o) > 0) throw InputError("", o, "needs --processor invparam");
   check_options();
   const bool want_pe = table == "nArch" || table == "all";
   const bool want_windows = table == "windows" || table == "all";

@@ -1,5 +1,6 @@
 // `cig arch` (arch_command.cpp): the architecture analysis of seed 004 (eq. 2-10), measured with
-// the project's setup and PE kernels and its cycle model (cmodel/quadtree/arch_analysis.hpp).
+// the project's setup and PE kernels and its cycle model (cmodel/quadtree/arch_analysis.hpp);
+// with --processor invparam, seed 002's frame time and faces/s (arch_invparam.cpp).
 #pragma once
 
 #include <string>
@@ -21,11 +22,19 @@ struct ArchCommand {
   int perf_rotation = 45;
   unsigned seed = 1;
   std::string table = "all", report_file;
+  // --processor invparam (seed 002): m, n, P, N_n, t_t and the mean object widths (columns).
+  std::string processor = "quadtree";
+  int faces_per_object = 6, columns = 512, pps = 512;
+  std::vector<long long> objects{100, 1000, 10000, 100000};
+  std::vector<double> widths{10, 50, 100, 250, 500};
+  double clock_ns = 3;
   void add_to(CLI::App& app);
   int run();
 
  private:
   void check_options();
+  void check_invparam_options();
+  int run_invparam();
 };
 
 }  // namespace cig::cli
