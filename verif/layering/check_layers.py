@@ -22,6 +22,7 @@ ALLOWED = {
     "hls/segment": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/quadtree": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/manager": {"hls/types"},                                              # stage A (seed 000)
+    "hls/invparam": {"hls/types", "hls/formatter"},                            # stage F (seed 002)
     # C model, in pipeline order
     "cmodel/common": set(),
     "cmodel/scene": {"cmodel/common"},
