@@ -43,6 +43,8 @@ ALLOWED = {
     "cmodel/quadtree": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                         "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
                         "hls/pixel", "hls/quadtree"},                                       # stage E
+    "cmodel/invparam": {"cmodel/common", "cmodel/scene", "cmodel/frame", "hls/types", "hls/formatter",
+                        "hls/invparam"},                                                    # stage F
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree"},     # every engine
     "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
