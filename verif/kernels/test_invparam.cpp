@@ -308,6 +308,48 @@ TEST(Invparam, HandScenes) {
   for (const auto& x : invparam_run_kernel<64>(invparam_setup<64>(f, lattice))) EXPECT_FALSE(x.hit);
 }
 
+// Exact corner cases, set up so that every setup value is dyadic (exact codes): on the 32 x 32
+// lattice with tan_half_fov = 1, sample (16, 16) looks along c = (1/32, 1/32, 1).
+struct Corner {
+  bool hit;
+  std::uint32_t code;
+};
+std::vector<Corner> corner_results(const std::vector<EyeFace>& faces, int i, int j) {
+  ScreenFrame f;
+  f.tan_half_fov = 1;
+  f.polyhedra = {EyePolyhedron{faces, 0}};
+  const InvparamLattice lattice{16, 1};
+  const InvparamSetup<64> s = invparam_setup<64>(f, lattice);
+  const auto k = invparam_run_kernel<64>(s)[static_cast<std::size_t>(j) * 32 + i];
+  const auto t =
+      invparam_double(invparam_setup_double(f, lattice, word_value<64>(s.eps)))[static_cast<std::size_t>(j) * 32 + i];
+  return {{k.hit, static_cast<std::uint32_t>(k.code.value())}, {t.hit, t.code}};
+}
+void expect_corner(const std::vector<EyeFace>& faces, int i, bool hit, std::uint32_t code) {
+  for (const Corner& c : corner_results(faces, i, 16)) {
+    EXPECT_EQ(c.hit, hit) << i;
+    if (hit) { EXPECT_EQ(c.code, code) << i; }
+  }
+}
+
+TEST(Invparam, ExactCornerCases) {
+  const EyeFace front{0, 0, -1, -4, -1}, back{0, 0, 1, 6, -1}, up{0, -1, 0, 1, -1}, down{0, 1, 0, 1, -1};
+  // Grazing an edge: the entry (front, tau 1/4) and the exit (x = 1/8, tau 1/4) coincide; the seed's
+  // strict tau_in > tau_out makes it no hit. One sample to the left the ray passes inside.
+  const std::vector<EyeFace> graze = {front, back, {1, 0, 0, 0.125, -1}, {-1, 0, 0, 1, -1}, up, down};
+  expect_corner(graze, 16, false, 0);
+  expect_corner(graze, 15, true, 0);
+  // Entering through an edge: two entry faces of equal tau; the PP keeps the later one (tau <= tau_in).
+  const EyeFace left{-1, 0, 0, -0.125, -1};
+  expect_corner({front, left, {1, 0, 0, 1, -1}, back, up, down}, 16, true, 1);
+  expect_corner({left, front, {1, 0, 0, 1, -1}, back, up, down}, 16, true, 1);
+  // A face parallel to the ray (tau = 0) with the eye outside it: a miss (Fig. 1 literally would
+  // skip it and see the front face).
+  const std::vector<EyeFace> parallel = {front, back, {1, 0, -1.0 / 32, -0.125, -1}, {-1, 0, 0, 1, -1}, up, down};
+  expect_corner(parallel, 16, false, 0);
+  expect_corner(parallel, 15, true, 0);
+}
+
 // The setup's sample positions are the formatter's lattice (Xs = (H_k / 2 - 2047) / 2048).
 TEST(Invparam, SamplePositionsAreTheFormattersLattice) {
   for (int n = hls::kMinRasterLog2; n <= hls::kMaxRasterLog2; ++n)
