@@ -11,11 +11,13 @@
 //   word_max/min   the largest / smallest code: RGtin's and RGtout's, RGobj's initial values
 //
 // Stage F's kernels take W as a template parameter (the seed's claims are about W: 57 bits to
-// 10 km, 64 to 100 km). For now Word<W> is the type layer's Int<W>, W <= 64; a wider type with the
-// same functions takes W up to 128.
+// 10 km, 64 to 100 km; the word-length study sweeps W = 40..72). Word<W> is the type layer's
+// WideInt<W> (hls/types/wide_int.hpp) for every W, 2 <= W <= 128.
 #pragma once
 
-#include "hls/types/bits.hpp"
+// hls-subset-helper: the word type and its adder/comparator functions every stage F kernel shares.
+
+#include "hls/types/wide_int.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -24,15 +26,15 @@ CIG_HLS_BEGIN_NAMESPACE
 constexpr int kWordIntBits = 8;
 
 template <int W>
-using Word = Int<W>;
+using Word = WideInt<W>;
 
 template <int W>
 CIG_HLS_INLINE Word<W> word_add(const Word<W>& a, const Word<W>& b) {
-  return wrap<W>(a + b);
+  return a.add_wrap(b);
 }
 template <int W>
 CIG_HLS_INLINE bool word_greater(const Word<W>& a, const Word<W>& b) {
-  return a > b;
+  return a.greater(b);
 }
 template <int W>
 CIG_HLS_INLINE bool word_negative(const Word<W>& a) {
@@ -40,15 +42,15 @@ CIG_HLS_INLINE bool word_negative(const Word<W>& a) {
 }
 template <int W>
 CIG_HLS_INLINE bool word_nonzero(const Word<W>& a) {
-  return a != Word<W>(0);
+  return !a.is_zero();
 }
 template <int W>
 CIG_HLS_INLINE Word<W> word_max() {
-  return Word<W>(Word<W>::max_value);
+  return Word<W>::max_code();
 }
 template <int W>
 CIG_HLS_INLINE Word<W> word_min() {
-  return Word<W>(Word<W>::min_value);
+  return Word<W>::min_code();
 }
 
 CIG_HLS_END_NAMESPACE

@@ -21,8 +21,8 @@ ALLOWED = {
     "hls/pixel": {"hls/types", "hls/formatter"},
     "hls/segment": {"hls/types", "hls/formatter", "hls/pixel"},
     "hls/quadtree": {"hls/types", "hls/formatter", "hls/pixel"},
-    "hls/invparam": {"hls/types"},  # stage F works from eye-space planes, not from the formatter
     "hls/manager": {"hls/types"},                                              # stage A (seed 000)
+    "hls/invparam": {"hls/types", "hls/formatter"},  # stage F (seed 002): the sample lattice's size only
     # C model, in pipeline order
     "cmodel/common": set(),
     "cmodel/scene": {"cmodel/common"},
@@ -44,8 +44,8 @@ ALLOWED = {
     "cmodel/quadtree": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                         "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
                         "hls/pixel", "hls/quadtree"},                                       # stage E
-    "cmodel/invparam": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter", "cmodel/image",
-                        "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter", "hls/pixel",
+    "cmodel/invparam": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/image", "cmodel/engine",
+                        "hls/types", "hls/formatter",
                         "hls/invparam"},                                                    # stage F
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree"},     # every engine
