@@ -50,6 +50,10 @@ struct EyeFace {
   // The face as drawn: its index in ScreenFrame::polygons (shading and ids come from it), -1 when
   // the geometric processor did not draw it (a back face, or culled, or clipped away whole).
   std::int32_t polygon = -1;
+  // Every polygon of ScreenFrame::polygons drawn on this face, `polygon` first: a face merged from
+  // several coplanar polygons (a triangulated mesh) is drawn as several; a sample belongs to the
+  // one that covers it.
+  std::vector<std::int32_t> pieces;
 };
 
 struct EyePolyhedron {

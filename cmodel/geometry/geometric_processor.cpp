@@ -121,8 +121,8 @@ struct ChannelGeometry {
 };
 
 // Stage F's input: every convex polyhedron of the list, once, in the order of its first entry, its
-// faces as eye-space planes of stage F's frame (y down: the screen's Ys), each with the first
-// polygon of f.polygons drawn on it. A world plane n.p = D becomes, for e = R (p - eye),
+// faces as eye-space planes of stage F's frame (y down: the screen's Ys), each with the polygons of
+// f.polygons drawn on it (the first is EyeFace::polygon). A world plane n.p = D becomes, for e = R (p - eye),
 // (R n).e = D - n.eye; the y flip changes n and e alike.
 void eye_polyhedra(const Scene& scene, const WorldDatabase& db, const ChannelView& view, const PriorityList& list,
                    ScreenFrame& f) {
@@ -153,6 +153,7 @@ void eye_polyhedra(const Scene& scene, const WorldDatabase& db, const ChannelVie
     EyeFace& face = f.polyhedra[std::size_t(s)]
                         .faces[std::size_t(hull.face_of[std::size_t(sp.subobject)][std::size_t(sp.polygon)])];
     if (face.polygon < 0) face.polygon = std::int32_t(i);
+    face.pieces.push_back(std::int32_t(i));
   }
 }
 

@@ -48,7 +48,7 @@ ALLOWED = {
                         "hls/types", "hls/formatter",
                         "hls/invparam"},                                                    # stage F
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
-                        "cmodel/reference", "cmodel/segment", "cmodel/quadtree"},     # every engine
+                        "cmodel/reference", "cmodel/segment", "cmodel/quadtree", "cmodel/invparam"},  # every engine
     "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
                         "cmodel/frame", "cmodel/image", "cmodel/engine", "cmodel/registry"},
     "cmodel/cli": {"cmodel/*"},                                                # every command

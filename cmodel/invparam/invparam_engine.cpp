@@ -1,0 +1,283 @@
+#include "invparam/invparam_engine.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/error.hpp"
+#include "invparam/face_setup.hpp"
+#include "invparam/invparam_double.hpp"
+
+namespace cig {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// The visibility of every sample of the L x L lattice, row-major (index j L + i: column i, row j).
+struct SampleHits {
+  int size = 0;
+  std::vector<std::int32_t> face;  // the visible face's index in the setup's face list, -1: none
+  std::vector<double> tau;         // its tau = 1/Z (1/m)
+  int saturated = 0, out_of_range = 0;
+};
+
+// A word's value: code 2^-(W - kWordIntBits) (word.hpp), exact in long double up to 64 bits.
+template <int W>
+double word_value(const hls::Word<W>& w) {
+  const __int128 code = static_cast<__int128>((static_cast<unsigned __int128>(w.high_limb()) << 64) | w.low_limb());
+  return static_cast<double>(std::ldexp(static_cast<long double>(code), -(W - hls::kWordIntBits)));
+}
+
+// The bit-accurate kernel, a column at a time: the host's column values (one add of step_x per
+// column), the PP chain's rows (one add of step_y per row).
+template <int W>
+SampleHits fixed_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
+  const InvparamSetup<W> setup = invparam_setup<W>(frame, lattice);
+  const int L = setup.size;
+  SampleHits h;
+  h.size = L;
+  h.face.assign(std::size_t(L) * std::size_t(L), -1);
+  h.tau.assign(h.face.size(), 0.0);
+  h.saturated = setup.saturated;
+  h.out_of_range = setup.out_of_range;
+  auto column = std::make_unique<hls::InvparamColumn<W>>();
+  std::vector<hls::InvparamSample<W>> out(hls::kMaxSamplesPerColumn);
+  hls::invparam_first_column(*setup.faces, *column);
+  for (int i = 0; i < L; ++i) {
+    if (i > 0) hls::invparam_next_column(*setup.faces, *column);
+    hls::invparam_column(*setup.faces, *column, L, setup.eps, out.data());
+    for (int j = 0; j < L; ++j) {
+      if (!out[std::size_t(j)].hit) continue;
+      const std::size_t idx = std::size_t(j) * std::size_t(L) + std::size_t(i);
+      h.face[idx] = std::int32_t(out[std::size_t(j)].code.value());
+      h.tau[idx] = word_value<W>(out[std::size_t(j)].tau);
+    }
+  }
+  return h;
+}
+
+// W from kMinWordBits to kMaxWordBits at run time: one instantiation of the kernel per width.
+using FixedHits = SampleHits (*)(const ScreenFrame&, const InvparamLattice&);
+template <int... K>
+constexpr std::array<FixedHits, sizeof...(K)> fixed_table(std::integer_sequence<int, K...>) {
+  return {&fixed_hits<kMinWordBits + K>...};
+}
+constexpr auto kFixedHits = fixed_table(std::make_integer_sequence<int, kMaxWordBits - kMinWordBits + 1>{});
+
+SampleHits double_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
+  // RGeps as the 64-bit kernel has it: -(L + 1) LSB of 2^-56.
+  const double eps = std::ldexp(double(invparam_eps_code(lattice.size())), -(64 - hls::kWordIntBits));
+  const std::vector<InvparamSampleDouble> s = invparam_double(invparam_setup_double(frame, lattice, eps));
+  SampleHits h;
+  h.size = lattice.size();
+  h.face.assign(s.size(), -1);
+  h.tau.assign(s.size(), 0.0);
+  for (std::size_t k = 0; k < s.size(); ++k)
+    if (s[k].hit) {
+      h.face[k] = std::int32_t(s[k].code);
+      h.tau[k] = s[k].tau;
+    }
+  return h;
+}
+
+// The Gouraud intensity of a polygon as a plane over the screen (Newell's normal of the points
+// (Xs, Ys, I)): the reference interpolates I linearly along edges and spans, which is this plane
+// for a polygon whose I are planar (the fan split makes them so everywhere else).
+struct IntensityPlane {
+  double x0 = 0, y0 = 0, i0 = 1, di_dx = 0, di_dy = 0;
+  double at(double x, double y) const { return std::clamp(i0 + di_dx * (x - x0) + di_dy * (y - y0), 0.0, 1.0); }
+};
+
+IntensityPlane intensity_plane(const ScreenPolygon& p) {
+  double nx = 0, ny = 0, nz = 0, mean = 0;
+  const std::size_t n = p.vertices.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const ScreenVertex& a = p.vertices[k];
+    const ScreenVertex& b = p.vertices[(k + 1) % n];
+    nx += (a.ys - b.ys) * (a.is + b.is);
+    ny += (a.is - b.is) * (a.xs + b.xs);
+    nz += (a.xs - b.xs) * (a.ys + b.ys);
+    mean += a.is / double(n);
+  }
+  IntensityPlane q;
+  q.x0 = p.vertices[0].xs;
+  q.y0 = p.vertices[0].ys;
+  q.i0 = p.vertices[0].is;
+  if (std::fabs(nz) > 1e-300) {
+    q.di_dx = -nx / nz;
+    q.di_dy = -ny / nz;
+  } else {
+    q.i0 = mean;  // a polygon of no area on the screen covers no sample anyway
+  }
+  return q;
+}
+
+// Whether screen point (x, y) lies in a convex polygon of either winding (its boundary included).
+bool contains(const ScreenPolygon& p, double x, double y) {
+  bool positive = false, negative = false;
+  const std::size_t n = p.vertices.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const ScreenVertex& a = p.vertices[k];
+    const ScreenVertex& b = p.vertices[(k + 1) % n];
+    const double c = (b.xs - a.xs) * (y - a.ys) - (b.ys - a.ys) * (x - a.xs);
+    positive = positive || c > 0;
+    negative = negative || c < 0;
+  }
+  return !(positive && negative);
+}
+
+// The polygon a sample of a face shows: the face's one drawn polygon, or of a face drawn as several
+// pieces the piece that covers the sample (the first where none does: a sample on a shared edge).
+std::int32_t drawn_polygon(const ScreenFrame& frame, const EyeFace& face, double x, double y) {
+  if (face.pieces.size() > 1)
+    for (std::int32_t p : face.pieces)
+      if (contains(frame.polygons[std::size_t(p)], x, y)) return p;
+  return face.polygon;
+}
+
+// Shade and resolve: a sample shows its face's polygon (colour x I, fogged by Z = 1/tau) or the
+// background; a pixel is the box filter of its S x S samples, its id their majority owner.
+RasterImage shade_and_resolve(const ScreenFrame& frame, const SampleHits& h,
+                              const std::vector<InvparamFaceOrigin>& origin, int side, long& samples_undrawn) {
+  std::vector<IntensityPlane> planes(frame.polygons.size());
+  for (std::size_t p = 0; p < frame.polygons.size(); ++p) planes[p] = intensity_plane(frame.polygons[p]);
+  const int n = frame.raster, L = h.size;
+  RasterImage out{Image(n, n), IdBuffer(n, n)};
+  std::vector<std::int32_t> owners(std::size_t(side) * std::size_t(side));
+  const Fog& fog = frame.fog;
+  for (int py = 0; py < n; ++py)
+    for (int px = 0; px < n; ++px) {
+      double sum[3] = {0, 0, 0};
+      int count = 0;
+      for (int sy = 0; sy < side; ++sy)
+        for (int sx = 0; sx < side; ++sx, ++count) {
+          const int i = px * side + sx, j = py * side + sy;
+          const std::size_t idx = std::size_t(j) * std::size_t(L) + std::size_t(i);
+          const double x = invparam_sample_screen(i, L), y = invparam_sample_screen(j, L);
+          std::int32_t poly = -1;
+          if (h.face[idx] >= 0) {
+            const InvparamFaceOrigin& o = origin[std::size_t(h.face[idx])];
+            poly = drawn_polygon(frame, frame.polyhedra[std::size_t(o.polyhedron)].faces[std::size_t(o.face)], x, y);
+            if (poly < 0) ++samples_undrawn;
+          }
+          owners[std::size_t(count)] = poly;
+          Rgb c = frame.background;
+          if (poly >= 0) {
+            const ScreenPolygon& p = frame.polygons[std::size_t(poly)];
+            const double in = planes[std::size_t(poly)].at(x, y);
+            const double z = 1.0 / h.tau[idx];
+            const double f = std::clamp((z - fog.start) / (fog.end - fog.start), 0.0, 1.0);
+            c = (1 - f) * in * p.colour + f * fog.colour;
+          }
+          sum[0] += c.r;
+          sum[1] += c.g;
+          sum[2] += c.b;
+        }
+      std::uint8_t* dst = out.image.at(px, py);
+      for (int k = 0; k < 3; ++k) dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / count, 0.0, 1.0) * 255.0));
+      out.ids.id[std::size_t(py) * std::size_t(n) + std::size_t(px)] = majority_owner(owners.data(), count);
+    }
+  return out;
+}
+
+class InvparamEngine : public RasterEngine {
+ public:
+  InvparamEngine(const EngineOptions& o, bool twin) : twin_(twin), name_(twin ? "invparam-double" : "invparam") {
+    for (const auto& [key, value] : o.params) {
+      if (key == "bits" && !twin) {
+        bits_ = parse_bits(value);
+      } else if (key == "spp") {
+        side_log2_ = samples_per_pixel_side_log2(value, 3, name_);
+      } else {
+        throw InputError(
+            "", "--engine-opt",
+            std::string("engine '") + name_ + "' takes no option '" + key + "' (it takes " +
+                (twin ? "" : "bits=" + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits) + ", ") +
+                "spp=1|4|16|64)");
+      }
+    }
+  }
+  const char* name() const override { return name_; }
+
+ protected:
+  void check_engine_raster(int raster) const override {
+    if ((raster << side_log2_) > hls::kMaxSamplesPerColumn)
+      throw InputError("", "raster",
+                       std::string("engine '") + name_ + "': " + std::to_string(raster) + " lines at " +
+                           std::to_string(1 << (2 * side_log2_)) + " samples per pixel need " +
+                           std::to_string(raster << side_log2_) + " pixel processors a column; the array has " +
+                           std::to_string(hls::kMaxSamplesPerColumn));
+  }
+  void check_split_frame(const ScreenFrame& frame) const override {
+    check_raster(frame.raster);
+    if (frame.polyhedra.empty() && !frame.polygons.empty())
+      throw InputError("", "polygons",
+                       std::string("engine '") + name_ +
+                           "' draws convex polyhedra (scene objects with \"polyhedron\": "
+                           "true); frame " +
+                           std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
+                           std::to_string(frame.polygons.size()) +
+                           " polygon(s) and no polyhedron (a polygon list has none)");
+    invparam_face_list(frame);  // the kernel's capacities (InputError)
+  }
+  EngineRun render_frame(const ScreenFrame& frame) override {
+    check_split_frame(frame);
+    const auto t0 = Clock::now();
+    const InvparamLattice lattice{frame.raster, side_log2_};
+    const SampleHits h =
+        twin_ ? double_hits(frame, lattice) : kFixedHits[std::size_t(bits_ - kMinWordBits)](frame, lattice);
+    const double visibility_ms = ms_since(t0);
+    const auto t1 = Clock::now();
+    long undrawn = 0;
+    EngineRun run;
+    run.out = shade_and_resolve(frame, h, invparam_face_list(frame), 1 << side_log2_, undrawn);
+    report(frame, h, undrawn, visibility_ms, ms_since(t1), run.report);
+    return run;
+  }
+
+ private:
+  static int parse_bits(const std::string& v) {
+    for (int w = kMinWordBits; w <= kMaxWordBits; ++w)
+      if (v == std::to_string(w)) return w;
+    throw InputError("", "--engine-opt",
+                     "bits='" + v + "' is not " + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits) +
+                         " (the pixel processor's word length)");
+  }
+  void report(const ScreenFrame& frame, const SampleHits& h, long undrawn, double visibility_ms, double shade_ms,
+              nlohmann::ordered_json& r) const {
+    long faces = 0, hit = 0;
+    for (const EyePolyhedron& p : frame.polyhedra) faces += long(p.faces.size());
+    for (std::int32_t f : h.face) hit += f >= 0 ? 1 : 0;
+    r["engine"] = name_;
+    if (!twin_) r["word_bits"] = bits_;
+    r["samples_per_pixel"] = 1 << (2 * side_log2_);
+    r["objects"] = frame.polyhedra.size();
+    r["faces"] = faces;
+    r["samples_hit"] = hit;
+    r["samples_on_undrawn_faces"] = undrawn;
+    r["setup_values_saturated"] = h.saturated;
+    r["faces_out_of_word_range"] = h.out_of_range;
+    r["light_points_not_drawn"] = frame.light_points.size();
+    r["visibility_ms"] = visibility_ms;
+    r["shade_ms"] = shade_ms;
+  }
+
+  bool twin_;
+  const char* name_;
+  int bits_ = 64;
+  int side_log2_ = 2;
+};
+
+}  // namespace
+
+std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin) {
+  return std::make_unique<InvparamEngine>(options, twin);
+}
+
+}  // namespace cig

@@ -1,0 +1,26 @@
+// Stage F's engines (seed 002, the inverse-parameter visibility processor; SPEC F):
+//   invparam         the bit-accurate kernel (hls/invparam/visibility.hpp) on W-bit words,
+//                    --engine-opt bits=W (kMinWordBits..kMaxWordBits, default 64)
+//   invparam-double  its double twin (invparam_double.hpp)
+// Both take the frame's convex polyhedra (ScreenFrame::polyhedra, from stage B) rather than its
+// polygons: per sample of the lattice (--engine-opt spp=1|4|16|64) the ray's visible face by
+// Fig. 1, a column at a time as the systolic array computes it. The sample's owner is the face as
+// drawn (EyeFace::polygon, so ids compare with the other engines'), shaded as the reference shades
+// that polygon (Gouraud I, screen-affine over the polygon's vertices; fog from the kernel's own
+// depth, Z = 1/tau), the pixel the box filter of its samples, its id the majority owner. Light
+// points and objects that are not polyhedra are not drawn (counted in the report); a frame with
+// polygons but no polyhedra (a polygon list) is refused.
+#pragma once
+
+#include <memory>
+
+#include "engine/engine.hpp"
+
+namespace cig {
+
+constexpr int kMinWordBits = 24;
+constexpr int kMaxWordBits = 80;
+
+std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin);
+
+}  // namespace cig
