@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "invparam/face_setup.hpp"
 #include "invparam/invparam_double.hpp"
+#include "invparam/systolic_array.hpp"
 
 namespace cig {
 
@@ -186,6 +187,37 @@ RasterImage shade_and_resolve(const ScreenFrame& frame, const SampleHits& h,
   return out;
 }
 
+// The systolic array's frame time for this frame (seed 002; systolic_array.hpp): N_n = L PPs, one
+// per sample of a column, P = L columns, every column's chain of T_Pln/T_Obj tokens (4 codes each)
+// and its T_Col, padded as the seed pads. Full streaming sends every object to every column (the
+// seed's formula, with each object's own face count); covered columns send an object only to the
+// columns its drawn polygons span (a conservative range: its silhouette is the union of its drawn
+// front faces, widened by one sample).
+struct ArrayTime {
+  std::int64_t full_clocks = 0, covered_clocks = 0;
+};
+
+ArrayTime array_time(const ScreenFrame& frame, int L) {
+  std::vector<std::int64_t> full(std::size_t(L), 4), covered(std::size_t(L), 4);  // the T_Col
+  for (const EyePolyhedron& p : frame.polyhedra) {
+    const std::int64_t codes = 4 * (std::int64_t(p.faces.size()) + 1);  // m T_Pln + T_Obj
+    double lo = 2, hi = -2;
+    for (const EyeFace& f : p.faces)
+      for (std::int32_t piece : f.pieces)
+        for (const ScreenVertex& v : frame.polygons[std::size_t(piece)].vertices) {
+          lo = std::min(lo, v.xs);
+          hi = std::max(hi, v.xs);
+        }
+    const int first = std::max(0, int(std::floor((lo + 1) / 2 * L)) - 1);
+    const int last = std::min(L - 1, int(std::ceil((hi + 1) / 2 * L)) + 1);
+    for (int i = 0; i < L; ++i) {
+      full[std::size_t(i)] += codes;
+      if (i >= first && i <= last) covered[std::size_t(i)] += codes;
+    }
+  }
+  return {invparam::covered_columns_clocks(full, L), invparam::covered_columns_clocks(covered, L)};
+}
+
 class InvparamEngine : public RasterEngine {
  public:
   InvparamEngine(const EngineOptions& o, bool twin) : twin_(twin), name_(twin ? "invparam-double" : "invparam") {
@@ -194,12 +226,18 @@ class InvparamEngine : public RasterEngine {
         bits_ = parse_bits(value);
       } else if (key == "spp") {
         side_log2_ = samples_per_pixel_side_log2(value, 3, name_);
+      } else if (key == "streaming") {
+        if (value != "full" && value != "covered")
+          throw InputError("", "--engine-opt", "streaming='" + value + "' is neither full nor covered");
+        covered_ = value == "covered";
+      } else if (key == "clock-ns") {
+        clock_ns_ = parse_clock_ns(value);
       } else {
         throw InputError(
             "", "--engine-opt",
             std::string("engine '") + name_ + "' takes no option '" + key + "' (it takes " +
                 (twin ? "" : "bits=" + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits) + ", ") +
-                "spp=1|4|16|64)");
+                "spp=1|4|16|64, streaming=full|covered, clock-ns=T)");
       }
     }
   }
@@ -242,6 +280,16 @@ class InvparamEngine : public RasterEngine {
   }
 
  private:
+  static double parse_clock_ns(const std::string& v) {
+    std::size_t used = 0;
+    double t = 0;
+    try {
+      t = std::stod(v, &used);
+    } catch (const std::exception&) { used = 0; }
+    if (used != v.size() || !(t > 0 && t <= 1e6))
+      throw InputError("", "--engine-opt", "clock-ns='" + v + "' is not a clock period in ns, > 0 and <= 1e6");
+    return t;
+  }
   static int parse_bits(const std::string& v) {
     for (int w = kMinWordBits; w <= kMaxWordBits; ++w)
       if (v == std::to_string(w)) return w;
@@ -264,6 +312,15 @@ class InvparamEngine : public RasterEngine {
     r["setup_values_saturated"] = h.saturated;
     r["faces_out_of_word_range"] = h.out_of_range;
     r["light_points_not_drawn"] = frame.light_points.size();
+    const ArrayTime t = array_time(frame, h.size);
+    r["array"] = {{"pixel_processors", h.size},
+                  {"columns", h.size},
+                  {"clock_ns", clock_ns_},
+                  {"streaming", covered_ ? "covered" : "full"},
+                  {"full_streaming_clocks", t.full_clocks},
+                  {"covered_columns_clocks", t.covered_clocks}};
+    // The modelled hardware time of the frame (cig sweep): the array's, in the chosen streaming.
+    r["hardware_ms"] = double(covered_ ? t.covered_clocks : t.full_clocks) * clock_ns_ * 1e-6;
     r["visibility_ms"] = visibility_ms;
     r["shade_ms"] = shade_ms;
   }
@@ -272,6 +329,8 @@ class InvparamEngine : public RasterEngine {
   const char* name_;
   int bits_ = 64;
   int side_log2_ = 2;
+  bool covered_ = false;   // streaming=covered: objects only to the columns they span
+  double clock_ns_ = 3.0;  // t_t: the seed's 3 ns clock of its fastest estimate
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "registry/engine_registry.hpp"
 
+#include <algorithm>
+
 #include "common/error.hpp"
 #include "invparam/invparam_engine.hpp"
 #include "quadtree/quadtree_engine.hpp"
@@ -10,6 +12,14 @@ namespace cig {
 
 std::vector<std::string> engine_names() {
   return {"float", "segment", "segment-double", "quadtree", "quadtree-double", "invparam", "invparam-double"};
+}
+
+std::vector<std::string> polygon_engine_names() {
+  std::vector<std::string> names = engine_names();
+  names.erase(
+      std::remove_if(names.begin(), names.end(), [](const std::string& n) { return n.rfind("invparam", 0) == 0; }),
+      names.end());
+  return names;
 }
 
 namespace {

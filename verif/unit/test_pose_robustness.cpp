@@ -68,7 +68,7 @@ TEST(PoseRobustness, EveryPoseGivesAReadableListThatEveryEngineDraws) {
       const ScreenFrame back = parse_polygon_list(written, "pose.polys.json");
       ASSERT_EQ(polygon_list_json(back), written);
       ++round_trips;
-      for (const std::string& engine : engine_names()) {
+      for (const std::string& engine : polygon_engine_names()) {
         const EngineRun run = make_engine(engine, EngineOptions{})->render(back);
         ASSERT_EQ(run.out.image.width, 32) << engine;
         for (std::int32_t id : run.out.ids.id) ASSERT_TRUE(id >= -1 && id < int(back.polygons.size())) << engine;
