@@ -172,10 +172,8 @@ CIG_HLS_INLINE PpOutputs<W> pp_clock(PpState<W>& st, const Word<W>& input, const
   return out;
 }
 
-// The top function's width: 57 bits, the seed's word for 1 mm depth precision to 10 km. (The seed's
-// PP has 64-bit registers for 100 km; word_add on the type layer's Int<W> needs W <= 63 until the
-// wide word type arrives.)
-constexpr int kPpTopWordBits = 57;
+// The top function's width: the seed's PP has six 64-bit registers (its word for 100 km).
+constexpr int kPpTopWordBits = 64;
 
 // Top function (HLS): one clock of one pixel processor.
 inline PpOutputs<kPpTopWordBits> invparam_pixel_processor_top(PpState<kPpTopWordBits>& st,

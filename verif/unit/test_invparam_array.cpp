@@ -192,7 +192,7 @@ TEST(InvparamTokens, FieldsRoundTrip) {
   EXPECT_TRUE(command_as(pln_command(false, true)));
 }
 
-// The HLS top (57-bit words): a token leaves one clock later, unchanged except T_Pln's word 3,
+// The HLS top (64-bit words): a token leaves one clock later, unchanged except T_Pln's word 3,
 // which gains step_y; the T_Col's clock 2 drives VT with the previous column's result.
 TEST(InvparamPixelProcessor, TopPassesTokensOneClockLater) {
   using namespace cig::hls;
