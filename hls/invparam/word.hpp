@@ -8,7 +8,8 @@
 //   word_add       SM: a + b wrapped to W bits (the seed's adder has no carry out)
 //   word_greater   Cm: a > b, signed
 //   word_negative  flag s;  word_nonzero  flag z
-//   word_max/min   the largest / smallest code: RGtin's and RGtout's, RGobj's initial values
+//   word_max/min   the largest / smallest code (RGtin starts at the largest; RGtout and RGobj start at 0,
+//                  Fig. 1's t = infinity: from the smallest, a missed object, tau_in = 0, would win)
 //
 // Stage F's kernels take W as a template parameter (the seed's claims are about W: 57 bits to
 // 10 km, 64 to 100 km; the word-length study sweeps W = 40..72). Word<W> is the type layer's
