@@ -191,19 +191,21 @@ void write_plot(const std::string& plot_file, const WordLengthStudy& s) {
       << "set multiplot layout 1,2 title \"cig wordlength: L = " << s.options.lattice << ", " << s.options.views
       << " views per range\" noenhanced\nset grid\nset logscale y\nset xlabel 'word length W (bits)'\n"
       << "set key top right font ',9' noenhanced\nset ylabel 'samples with a wrong face or depth error > 1 mm'\nplot ";
-  depth << "set ylabel 'largest depth error (m)'\nset format y '10^{%L}'\nplot " << 1e-3
-        << " with lines dt 2 lc rgb 'black' title '1 mm', ";
+  depth << "set ylabel 'largest depth error (m)'\nset format y '10^{%L}'\nset key bottom left\nplot " << 1e-3
+        << " with lines dt 2 lw 2 lc rgb 'black' title '1 mm', ";
   for (std::size_t k = 0; k < s.rows.size(); ++k) {
     const WordLengthRow& r = s.rows[k];
     const std::string data = job.file("row" + std::to_string(k) + ".dat");
     std::ofstream out(data);
     for (const WordLengthCell& c : r.cells)
       out << c.bits << " " << (c.in_error > 0 ? std::to_string(c.in_error) : "NaN") << " " << std::scientific
-          << std::max(c.max_depth_error, 1e-30) << std::defaultfloat << "\n";
+          << c.max_depth_error << std::defaultfloat << "\n";  // a zero (no error) is left out by log y
     const std::string title =
         range_name(r.range) + " " + depth_method_letter(r.method) + " " + depth_method_name(r.method);
-    const std::string style = std::string(" with linespoints lw 2 dt ") + (r.range == s.options.ranges[0] ? "1" : "3") +
-                              " lc " + std::to_string(int(r.method) + 1) + " title '" + title + "'";
+    const std::string style = std::string(" with linespoints lw ") +
+                              (r.method == DepthMethod::kInverseParameter ? "5" : "2") + " dt " +
+                              std::string(r.range == s.options.ranges[0] ? "1 pt 6" : "3 pt 7") + " lc " +
+                              std::to_string(int(r.method) + 1) + " title '" + title + "'";
     errors << (k ? ", " : "") << "'" << data << "' using 1:2" << style;
     depth << (k ? ", " : "") << "'" << data << "' using 1:3" << style;
   }

@@ -186,10 +186,10 @@ int triangle_of(const ZTriangle& t0, double x, double y) {
 // One sample of one method: `got` and `want` are face indices (-1: none), `solid` maps a face to
 // its polyhedron. A different face of the same solid with the depth within 1 mm is an edge tie
 // (the sample lies on the solid's edge within the word's precision), not a wrong face.
-void tally(WordLengthCell& c, int got, int want, long double depth, double truth_t, const std::vector<int>& solid) {
+void tally(WordLengthCell& c, int got, int want, Quad depth, Quad truth_t, const std::vector<int>& solid) {
   bool over = false;
   if (got >= 0 && want >= 0) {
-    const double err = double(std::fabs(depth - (long double)truth_t));
+    const double err = double(depth > truth_t ? depth - truth_t : truth_t - depth);
     over = err > kDepthTolerance;
     c.max_depth_error = std::max(c.max_depth_error, err);
   }
@@ -250,7 +250,7 @@ ViewTables view_tables(const StudyView& v, const WordLengthOptions& o) {
 // The truth of every sample of the view.
 struct ViewTruth {
   std::vector<std::int32_t> face;
-  std::vector<double> t;
+  std::vector<Quad> t;  // binary128: the depth errors of 72-bit words are ~1e-17 m
   std::vector<std::uint8_t> uncertain;
 };
 
@@ -267,7 +267,7 @@ ViewTruth view_truth(const ScreenFrame& frame, int L) {
       t.uncertain[k] = s.uncertain ? 1 : 0;
       if (s.hit) {
         t.face[k] = std::int32_t(s.code);
-        t.t[k] = double(1 / s.tau_exact);
+        t.t[k] = 1 / s.tau_exact;
       }
     }
   return t;
@@ -282,13 +282,13 @@ void run_kernel(const StudyView& v, const ViewTruth& truth, const WordLengthOpti
     WordLengthCell& cell = row.cells[std::size_t(w - o.min_bits)];
     for (std::size_t k = 0; k < h.face.size(); ++k) {
       if (truth.uncertain[k]) continue;
-      tally(cell, h.face[k], truth.face[k], h.face[k] >= 0 ? 1.0L / h.tau[k] : 0.0L, truth.t[k], solid);
+      tally(cell, h.face[k], truth.face[k], h.face[k] >= 0 ? 1 / Quad(h.tau[k]) : Quad(0), truth.t[k], solid);
     }
   }
 }
 
 // Methods b, c, d at one sample, every W.
-void depth_buffers(const ViewTables& tab, const Cover* cov, int n, int i, int j, int want, double truth_t,
+void depth_buffers(const ViewTables& tab, const Cover* cov, int n, int i, int j, int want, Quad truth_t,
                    const WordLengthOptions& o, const std::vector<int>& solid, WordLengthRow* rows[3]) {
   for (int wi = 0; wi < tab.widths; ++wi) {
     const int w = o.min_bits + wi;
@@ -303,11 +303,11 @@ void depth_buffers(const ViewTables& tab, const Cover* cov, int n, int i, int j,
       if (got_c < 0 || tc > best_c) got_c = f, best_c = tc;
       if (got_d < 0 || zd < best_d) got_d = f, best_d = zd;
     }
-    const long double zscale = std::ldexp(1.0L, -(w - kZIntBits));
-    const long double depth_c = best_c > 0 ? std::ldexp(1.0L, w - 8) / (long double)best_c : 0.0L;
-    tally(rows[0]->cells[std::size_t(wi)], got_b, want, (long double)best_b * zscale, truth_t, solid);
+    const Quad zscale = std::ldexp(1.0, -(w - kZIntBits));  // a power of two, exact
+    const Quad depth_c = best_c > 0 ? Quad(std::ldexp(1.0, w - 8)) / Quad(best_c) : Quad(0);
+    tally(rows[0]->cells[std::size_t(wi)], got_b, want, Quad(best_b) * zscale, truth_t, solid);
     tally(rows[1]->cells[std::size_t(wi)], best_c > 0 ? got_c : -1, want, depth_c, truth_t, solid);
-    tally(rows[2]->cells[std::size_t(wi)], got_d, want, (long double)best_d * zscale, truth_t, solid);
+    tally(rows[2]->cells[std::size_t(wi)], got_d, want, Quad(best_d) * zscale, truth_t, solid);
   }
 }
 
