@@ -7,8 +7,9 @@
 //  * The direct Z-buffer (method b) interpolates Z linearly in screen space, which is wrong for a
 //    plane (1/Z is affine, Z is not): its depth error does not shrink with W. Z over a triangle is
 //    convex in screen space, so the chord lies behind the plane by about (dZ)^2 / (4 Z) over a depth
-//    span dZ: for the wall (120 m turned by up to 3 degrees: dZ up to ~6 m) up to about a
-//    millimetre at 10 km, ten times less at 100 km (the same poses), the same at every W; the
+//    span dZ: up to a few millimetres at 10 km on the wall (its front face's diagonal spans up to
+//    ~8 m, its edge-on top and bottom ~14 m), ten times less at 100 km (the same poses), the same at
+//    every W; the
 //    inverse Z-buffer (c) and exact Z (d) are right at 64 bits.
 #include <stdexcept>
 
