@@ -15,6 +15,7 @@ void Commands::add_to(CLI::App& app) {
   stress.add_to(app);
   cull.add_to(app);
   manager.add_to(app);
+  wordlength.add_to(app);
   // Listed for --help; `cig cosim ...` never reaches the parser (main.cpp forwards it to cig-cosim).
   app.add_subcommand("cosim",
                      "co-simulate the quadtree RTL against the kernels and the architecture model (runs cig-cosim; "
@@ -43,6 +44,7 @@ int Commands::run() {
   if (*stress.sub) return stress.run();
   if (*cull.sub) return cull.run();
   if (*manager.sub) return manager.run();
+  if (*wordlength.sub) return wordlength.run();
   return 0;
 }
 

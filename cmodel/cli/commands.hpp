@@ -13,6 +13,7 @@
 #include "cli/render_command.hpp"
 #include "cli/stress_command.hpp"
 #include "cli/sweep_command.hpp"
+#include "cli/wordlength_command.hpp"
 
 namespace cig::cli {
 
@@ -26,6 +27,7 @@ struct Commands {
   StressCommand stress;
   CullCommand cull;
   ManagerCommand manager;
+  WordLengthCommand wordlength;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -25,9 +24,8 @@
 #include <set>
 #include <sstream>
 
-#include <unistd.h>
-
 #include "cli/frame_jobs.hpp"
+#include "cli/gnuplot_plot.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "registry/engine_registry.hpp"
@@ -221,52 +219,31 @@ std::string table_text(const SweepCommand& c, const std::vector<SweepRow>& rows,
   return t.str();
 }
 
-// --plot: checked before any work (gnuplot present, the file writable).
-void check_plot(const std::string& plot_file) {
-  if (plot_file.empty()) return;
-  check_output_file(plot_file, "--plot");
-  if (std::system("gnuplot --version > /dev/null 2>&1") != 0)
-    throw InputError("", "--plot", "needs gnuplot (Debian package gnuplot-nox; tools/deps.sh installs it)");
-}
-
-// PSNR against time, every row a point, the Pareto rows joined and labelled; written to a
-// temporary file first, so a failed plot leaves no partial output.
+// PSNR against time, every row a point, the Pareto rows joined and labelled (gnuplot_plot.hpp).
 void write_plot(const std::string& plot_file, const std::vector<SweepRow>& rows, const FrameJobs& jobs,
                 const std::string& title) {
   const bool hw = frontier_uses_hardware(rows);
-  const auto dir = std::filesystem::temp_directory_path() / ("cig-sweep-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const GnuplotJob job("sweep");
   std::vector<const SweepRow*> sorted;
   for (const SweepRow& r : rows) sorted.push_back(&r);
   std::sort(sorted.begin(), sorted.end(),
             [&](const SweepRow* a, const SweepRow* b) { return frontier_time(*a, hw) < frontier_time(*b, hw); });
   {
-    std::ofstream all(dir / "all.dat"), front(dir / "pareto.dat");
+    std::ofstream all(job.file("all.dat")), front(job.file("pareto.dat"));
     for (const SweepRow* r : sorted) {
       const double t = frontier_time(*r, hw) / jobs.frames(), p = r->totals.all.psnr();
       all << t << " " << p << "\n";
       if (r->pareto) front << t << " " << p << " \"" << r->label << "\"\n";
     }
   }
-  const std::string png = (dir / "plot.png").string();
-  std::ofstream(dir / "plot.gp") << "set terminal png size 1000,640\nset output '" << png << "'\nset title \"" << title
-                                 << "\" noenhanced\nset xlabel '" << (hw ? "modelled hardware" : "C model")
-                                 << " ms per frame'\nset ylabel 'PSNR against the reference (dB)'\nset logscale x\n"
-                                 << "set grid\nset key bottom right\nplot '" << (dir / "all.dat").string()
-                                 << "' using 1:2 with points pt 7 ps 1 title 'configurations', '"
-                                 << (dir / "pareto.dat").string()
-                                 << "' using 1:2 with linespoints pt 6 ps 2 lw 2 title 'Pareto frontier', '"
-                                 << (dir / "pareto.dat").string()
-                                 << "' using 1:2:3 with labels offset 1,-1 left font ',8' noenhanced notitle\n";
-  const int rc = std::system(("gnuplot '" + (dir / "plot.gp").string() + "' > /dev/null 2>&1").c_str());
-  if (rc != 0 || !std::filesystem::exists(png)) {
-    std::filesystem::remove_all(dir);
-    throw InputError("", "--plot", "gnuplot failed to draw the plot");
-  }
-  const auto parent = std::filesystem::path(plot_file).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  std::filesystem::copy_file(png, plot_file, std::filesystem::copy_options::overwrite_existing);
-  std::filesystem::remove_all(dir);
+  std::ostringstream gp;
+  gp << "set title \"" << title << "\" noenhanced\nset xlabel '" << (hw ? "modelled hardware" : "C model")
+     << " ms per frame'\nset ylabel 'PSNR against the reference (dB)'\nset logscale x\n"
+     << "set grid\nset key bottom right\nplot '" << job.file("all.dat")
+     << "' using 1:2 with points pt 7 ps 1 title 'configurations', '" << job.file("pareto.dat")
+     << "' using 1:2 with linespoints pt 6 ps 2 lw 2 title 'Pareto frontier', '" << job.file("pareto.dat")
+     << "' using 1:2:3 with labels offset 1,-1 left font ',8' noenhanced notitle\n";
+  job.draw(gp.str(), 1000, 640, plot_file, "--plot");
 }
 
 }  // namespace
@@ -288,7 +265,7 @@ int SweepCommand::run() {
     } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
   }
   if (!report_file.empty()) check_output_file(report_file, "--report");
-  check_plot(plot_file);
+  check_plot_output(plot_file, "--plot");
   std::vector<SweepRow> rows = measure(jobs, combos, ro, engines, repeat);
   mark_pareto(rows);
 

@@ -20,14 +20,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-// The visibility of every sample of the L x L lattice, row-major (index j L + i: column i, row j).
-struct SampleHits {
-  int size = 0;
-  std::vector<std::int32_t> face;  // the visible face's index in the setup's face list, -1: none
-  std::vector<double> tau;         // its tau = 1/Z (1/m)
-  int saturated = 0, out_of_range = 0;
-};
-
 // A word's value: code 2^-(W - kWordIntBits) (word.hpp), exact in long double up to 64 bits.
 template <int W>
 double word_value(const hls::Word<W>& w) {
@@ -38,10 +30,10 @@ double word_value(const hls::Word<W>& w) {
 // The bit-accurate kernel, a column at a time: the host's column values (one add of step_x per
 // column), the PP chain's rows (one add of step_y per row).
 template <int W>
-SampleHits fixed_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
+InvparamHits fixed_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
   const InvparamSetup<W> setup = invparam_setup<W>(frame, lattice);
   const int L = setup.size;
-  SampleHits h;
+  InvparamHits h;
   h.size = L;
   h.face.assign(std::size_t(L) * std::size_t(L), -1);
   h.tau.assign(h.face.size(), 0.0);
@@ -64,18 +56,18 @@ SampleHits fixed_hits(const ScreenFrame& frame, const InvparamLattice& lattice) 
 }
 
 // W from kMinWordBits to kMaxWordBits at run time: one instantiation of the kernel per width.
-using FixedHits = SampleHits (*)(const ScreenFrame&, const InvparamLattice&);
+using FixedHits = InvparamHits (*)(const ScreenFrame&, const InvparamLattice&);
 template <int... K>
 constexpr std::array<FixedHits, sizeof...(K)> fixed_table(std::integer_sequence<int, K...>) {
   return {&fixed_hits<kMinWordBits + K>...};
 }
 constexpr auto kFixedHits = fixed_table(std::make_integer_sequence<int, kMaxWordBits - kMinWordBits + 1>{});
 
-SampleHits double_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
+InvparamHits double_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
   // RGeps as the 64-bit kernel has it: -(L + 1) LSB of 2^-56.
   const double eps = std::ldexp(double(invparam_eps_code(lattice.size())), -(64 - hls::kWordIntBits));
   const std::vector<InvparamSampleDouble> s = invparam_double(invparam_setup_double(frame, lattice, eps));
-  SampleHits h;
+  InvparamHits h;
   h.size = lattice.size();
   h.face.assign(s.size(), -1);
   h.tau.assign(s.size(), 0.0);
@@ -144,7 +136,7 @@ std::int32_t drawn_polygon(const ScreenFrame& frame, const EyeFace& face, double
 
 // Shade and resolve: a sample shows its face's polygon (colour x I, fogged by Z = 1/tau) or the
 // background; a pixel is the box filter of its S x S samples, its id their majority owner.
-RasterImage shade_and_resolve(const ScreenFrame& frame, const SampleHits& h,
+RasterImage shade_and_resolve(const ScreenFrame& frame, const InvparamHits& h,
                               const std::vector<InvparamFaceOrigin>& origin, int side, long& samples_undrawn) {
   std::vector<IntensityPlane> planes(frame.polygons.size());
   for (std::size_t p = 0; p < frame.polygons.size(); ++p) planes[p] = intensity_plane(frame.polygons[p]);
@@ -268,7 +260,7 @@ class InvparamEngine : public RasterEngine {
     check_split_frame(frame);
     const auto t0 = Clock::now();
     const InvparamLattice lattice{frame.raster, side_log2_};
-    const SampleHits h =
+    const InvparamHits h =
         twin_ ? double_hits(frame, lattice) : kFixedHits[std::size_t(bits_ - kMinWordBits)](frame, lattice);
     const double visibility_ms = ms_since(t0);
     const auto t1 = Clock::now();
@@ -297,7 +289,7 @@ class InvparamEngine : public RasterEngine {
                      "bits='" + v + "' is not " + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits) +
                          " (the pixel processor's word length)");
   }
-  void report(const ScreenFrame& frame, const SampleHits& h, long undrawn, double visibility_ms, double shade_ms,
+  void report(const ScreenFrame& frame, const InvparamHits& h, long undrawn, double visibility_ms, double shade_ms,
               nlohmann::ordered_json& r) const {
     long faces = 0, hit = 0;
     for (const EyePolyhedron& p : frame.polyhedra) faces += long(p.faces.size());
@@ -334,6 +326,14 @@ class InvparamEngine : public RasterEngine {
 };
 
 }  // namespace
+
+InvparamHits invparam_kernel_hits(const ScreenFrame& frame, const InvparamLattice& lattice, int bits) {
+  if (bits < kMinWordBits || bits > kMaxWordBits)
+    throw InputError(
+        "", "bits",
+        std::to_string(bits) + " is not " + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits));
+  return kFixedHits[std::size_t(bits - kMinWordBits)](frame, lattice);
+}
 
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin) {
   return std::make_unique<InvparamEngine>(options, twin);

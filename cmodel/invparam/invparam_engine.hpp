@@ -12,9 +12,12 @@
 // polygons but no polyhedra (a polygon list) is refused.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "engine/engine.hpp"
+#include "invparam/face_setup.hpp"
 
 namespace cig {
 
@@ -22,5 +25,17 @@ constexpr int kMinWordBits = 24;
 constexpr int kMaxWordBits = 80;
 
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin);
+
+// The visibility of every sample of the L x L lattice, row-major (index j L + i: column i, row j).
+struct InvparamHits {
+  int size = 0;
+  std::vector<std::int32_t> face;  // the visible face's index in the setup's face list, -1: none
+  std::vector<double> tau;         // its tau = 1/Z (1/m), the W-bit word's value
+  int saturated = 0, out_of_range = 0;
+};
+
+// The bit-accurate kernel at W = bits (kMinWordBits..kMaxWordBits) over the frame's polyhedra, a
+// column at a time as the engine runs it (the word-length study's method a).
+InvparamHits invparam_kernel_hits(const ScreenFrame& frame, const InvparamLattice& lattice, int bits);
 
 }  // namespace cig
