@@ -37,6 +37,7 @@ InvparamHits fixed_hits(const ScreenFrame& frame, const InvparamLattice& lattice
   h.size = L;
   h.face.assign(std::size_t(L) * std::size_t(L), -1);
   h.tau.assign(h.face.size(), 0.0);
+  h.origin = setup.origin;
   h.saturated = setup.saturated;
   h.out_of_range = setup.out_of_range;
   auto column = std::make_unique<hls::InvparamColumn<W>>();
@@ -71,6 +72,7 @@ InvparamHits double_hits(const ScreenFrame& frame, const InvparamLattice& lattic
   h.size = lattice.size();
   h.face.assign(s.size(), -1);
   h.tau.assign(s.size(), 0.0);
+  h.origin = invparam_face_list(frame);
   for (std::size_t k = 0; k < s.size(); ++k)
     if (s[k].hit) {
       h.face[k] = std::int32_t(s[k].code);
@@ -136,8 +138,7 @@ std::int32_t drawn_polygon(const ScreenFrame& frame, const EyeFace& face, double
 
 // Shade and resolve: a sample shows its face's polygon (colour x I, fogged by Z = 1/tau) or the
 // background; a pixel is the box filter of its S x S samples, its id their majority owner.
-RasterImage shade_and_resolve(const ScreenFrame& frame, const InvparamHits& h,
-                              const std::vector<InvparamFaceOrigin>& origin, int side, long& samples_undrawn) {
+RasterImage shade_and_resolve(const ScreenFrame& frame, const InvparamHits& h, int side, long& samples_undrawn) {
   std::vector<IntensityPlane> planes(frame.polygons.size());
   for (std::size_t p = 0; p < frame.polygons.size(); ++p) planes[p] = intensity_plane(frame.polygons[p]);
   const int n = frame.raster, L = h.size;
@@ -155,7 +156,7 @@ RasterImage shade_and_resolve(const ScreenFrame& frame, const InvparamHits& h,
           const double x = invparam_sample_screen(i, L), y = invparam_sample_screen(j, L);
           std::int32_t poly = -1;
           if (h.face[idx] >= 0) {
-            const InvparamFaceOrigin& o = origin[std::size_t(h.face[idx])];
+            const InvparamFaceOrigin& o = h.origin[std::size_t(h.face[idx])];
             poly = drawn_polygon(frame, frame.polyhedra[std::size_t(o.polyhedron)].faces[std::size_t(o.face)], x, y);
             if (poly < 0) ++samples_undrawn;
           }
@@ -266,7 +267,7 @@ class InvparamEngine : public RasterEngine {
     const auto t1 = Clock::now();
     long undrawn = 0;
     EngineRun run;
-    run.out = shade_and_resolve(frame, h, invparam_face_list(frame), 1 << side_log2_, undrawn);
+    run.out = shade_and_resolve(frame, h, 1 << side_log2_, undrawn);
     report(frame, h, undrawn, visibility_ms, ms_since(t1), run.report);
     return run;
   }

@@ -29,8 +29,9 @@ std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options,
 // The visibility of every sample of the L x L lattice, row-major (index j L + i: column i, row j).
 struct InvparamHits {
   int size = 0;
-  std::vector<std::int32_t> face;  // the visible face's index in the setup's face list, -1: none
-  std::vector<double> tau;         // its tau = 1/Z (1/m), the W-bit word's value
+  std::vector<std::int32_t> face;          // the visible face's index in the setup's face list, -1: none
+  std::vector<double> tau;                 // its tau = 1/Z (1/m), the W-bit word's value
+  std::vector<InvparamFaceOrigin> origin;  // the setup's face list: where face f comes from
   int saturated = 0, out_of_range = 0;
 };
 
