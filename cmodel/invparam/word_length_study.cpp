@@ -331,31 +331,14 @@ void run_depth_buffers(const StudyView& v, const ViewTruth& truth, const WordLen
 
 }  // namespace
 
+// The methods' names and letters in kDepthMethods' order (the enum's).
 const char* depth_method_name(DepthMethod m) {
-  switch (m) {
-    case DepthMethod::kInverseParameter:
-      return "invparam";
-    case DepthMethod::kZBuffer:
-      return "z-buffer";
-    case DepthMethod::kInverseZBuffer:
-      return "inverse-z";
-    case DepthMethod::kExactZ:
-      return "exact-z";
-  }
-  return "?";
+  static const char* const kNames[] = {"invparam", "z-buffer", "inverse-z", "exact-z"};
+  return kNames[int(m)];
 }
 const char* depth_method_letter(DepthMethod m) {
-  switch (m) {
-    case DepthMethod::kInverseParameter:
-      return "a";
-    case DepthMethod::kZBuffer:
-      return "b";
-    case DepthMethod::kInverseZBuffer:
-      return "c";
-    case DepthMethod::kExactZ:
-      return "d";
-  }
-  return "?";
+  static const char* const kLetters[] = {"a", "b", "c", "d"};
+  return kLetters[int(m)];
 }
 
 int WordLengthRow::smallest_bits() const {
