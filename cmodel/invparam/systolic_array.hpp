@@ -33,8 +33,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
+#include "common/stall_pattern.hpp"
 #include "hls/invparam/pixel_processor.hpp"
 #include "hls/invparam/records.hpp"
 
@@ -153,57 +155,135 @@ std::vector<StreamCode<W>> build_frame_stream(const InvparamScene<W>& scene, int
   return s;
 }
 
-template <int W>
-ArrayRun<W> run_array_stream(const std::vector<StreamCode<W>>& stream, const Word<W>& eps, int columns, int n_pp);
+// Verification pacing (the co-simulation applies the same to the RTL): in `input_gap_percent` %
+// of the cycles the host has no word ready (a bubble enters PP 0; a word already offered and not
+// taken stays offered), in `vt_stall_percent` % the VT consumer is not ready. Drawn by
+// stall_hit(seed, cycle, stream 0 / 1). The idle codes after the stream are never gapped.
+struct ArrayPacing {
+  std::uint32_t seed = 1;
+  int input_gap_percent = 0;
+  int vt_stall_percent = 0;
+};
 
-// Runs the array clock by clock on the stream until every PP has sent every column's result and
-// the last PP has finished the last T_Col (after the stream ends the host idles: empty codes).
+// The array's handshakes, cycle t (clocks count from 1):
+//   vt_valid = some PP drives VT (pp_drives_vt on its state and its Input's Ctrl);
+//   advance  = vt_ready || !vt_valid: a result the consumer does not take freezes every PP (the
+//              whole array holds: its clock enable), anything else moves the chain;
+//   in_ready = advance: the host's word is taken (or its bubble enters) when the array moves.
+// Observer: on_clock(t, k, outputs of PP k, drives_vt) for every PP of every advancing clock (the
+// word and Ctrl each PP passes down, its VT); on_freeze(t) for a cycle the array holds.
+struct NoArrayObserver {
+  template <class Outputs>
+  void on_clock(std::int64_t, int, const Outputs&) {}
+  void on_freeze(std::int64_t) {}
+};
+
 template <int W>
-ArrayRun<W> run_systolic_array(const InvparamScene<W>& scene, int columns, int n_pp,
-                               StreamMode mode = StreamMode::kFull) {
-  if (columns < 1 || n_pp < 1) throw std::invalid_argument("run_systolic_array: columns and n_pp must be >= 1");
-  return run_array_stream(build_frame_stream(scene, columns, n_pp, mode), scene.eps, columns, n_pp);
+struct ArrayInput {  // what the host puts on PP 0's Input and Ctrl in a cycle
+  Word<W> word;
+  PpCtrl ctrl;
+};
+
+// The host's offer in cycle t: the next code, a bubble, or (after the stream) an idle empty code.
+template <int W>
+ArrayInput<W> host_offer(const std::vector<StreamCode<W>>& stream, std::size_t next, bool holding, std::int64_t t,
+                         const ArrayPacing& pacing) {
+  if (next >= stream.size()) return {hls::word_zero<W>(), PpCtrl{true, true}};
+  const bool gap = !holding && stall_hit(pacing.seed, std::uint64_t(t), 0, pacing.input_gap_percent);
+  return {stream[next].word, PpCtrl{stream[next].start, !gap}};
 }
 
-// The same on a given stream (any padding).
+// Whether some PP drives VT in this cycle, before the edge (PP k > 0 reads PP k - 1's registers).
 template <int W>
-ArrayRun<W> run_array_stream(const std::vector<StreamCode<W>>& stream, const Word<W>& eps, int columns, int n_pp) {
-  std::vector<PpState<W>> pp(static_cast<std::size_t>(n_pp));
-  for (PpState<W>& st : pp) hls::pp_reset(st, eps);
+bool array_drives_vt(const std::vector<PpState<W>>& pp, const ArrayInput<W>& in) {
+  PpCtrl ctrl = in.ctrl;
+  for (const PpState<W>& st : pp) {
+    if (hls::pp_drives_vt(st, ctrl)) return true;
+    ctrl = PpCtrl{st.Tctrl, st.Tvalid};
+  }
+  return false;
+}
+
+// One advancing clock of the chain: every PP takes the word of the one above; VT results recorded.
+template <int W, class Observer>
+void clock_array(std::vector<PpState<W>>& pp, const ArrayInput<W>& in, std::int64_t t, int columns, ArrayRun<W>& run,
+                 std::vector<int>& sent, Observer& observer) {
+  Word<W> word = in.word;
+  PpCtrl ctrl = in.ctrl;
+  int drivers = 0;
+  const int n_pp = int(pp.size());
+  for (int k = 0; k < n_pp; ++k) {
+    const hls::PpOutputs<W> o = hls::pp_clock(pp[std::size_t(k)], word, ctrl);
+    observer.on_clock(t, k, o);
+    if (o.vt.valid) {
+      ++drivers;
+      int& col = sent[std::size_t(k)];
+      if (col >= columns) throw std::logic_error("run_systolic_array: more VT results than columns");
+      run.results[std::size_t(col) * n_pp + k] = {o.vt.par, o.vt.obj};
+      ++col;
+      run.last_vt_clock = t;
+    }
+    word = o.output;
+    ctrl = o.ctrl;
+  }
+  if (drivers > 1) ++run.vt_conflicts;
+}
+
+// Runs the array clock by clock on the stream until every PP has sent every column's result and
+// the last PP has finished the last T_Col (after the stream ends the host idles: empty codes; with
+// bubbles the frame may end before the host has sent the last of the N_n - 1 pushing codes). `pp`
+// is the chain's state, N_n PPs, kept for the next frame: a frame needs no reset, its initialising
+// T_Col starts every PP afresh (clocks count from 1 again; the next frame's first code may come in
+// the clock after this frame's last).
+template <int W, class Observer = NoArrayObserver>
+ArrayRun<W> run_array_frame(std::vector<PpState<W>>& pp, const std::vector<StreamCode<W>>& stream, int columns,
+                            const ArrayPacing& pacing = {}, Observer&& observer = Observer{}) {
+  if (pacing.input_gap_percent > 75 || pacing.vt_stall_percent > 75)
+    throw std::invalid_argument("run_systolic_array: stall percentages above 75 would not drain in time");
+  const int n_pp = int(pp.size());
   ArrayRun<W> run;
   run.codes_in = std::int64_t(stream.size());
   run.results.resize(std::size_t(columns) * std::size_t(n_pp));
   std::vector<int> sent(std::size_t(n_pp), 0);  // VT results per PP so far
-  std::int64_t total_sent = 0;
-  const std::int64_t limit = run.codes_in + 4 * std::int64_t(n_pp) + 16;
+  const std::int64_t limit = 8 * (run.codes_in + 4 * std::int64_t(n_pp) + 16);
+  std::size_t next = 0;  // the next code the host offers
+  bool holding = false;  // the host offered it in a cycle the array held
   for (std::int64_t t = 1; t <= limit; ++t) {
-    StreamCode<W> in = t <= run.codes_in ? stream[std::size_t(t - 1)] : StreamCode<W>{hls::word_zero<W>(), true};
-    Word<W> word = in.word;
-    PpCtrl ctrl{in.start};
-    int drivers = 0;
-    for (int k = 0; k < n_pp; ++k) {
-      const hls::PpOutputs<W> o = hls::pp_clock(pp[std::size_t(k)], word, ctrl);
-      if (o.vt.valid) {
-        ++drivers;
-        int& col = sent[std::size_t(k)];
-        if (col >= columns) throw std::logic_error("run_systolic_array: more VT results than columns");
-        run.results[std::size_t(col) * n_pp + k] = {o.vt.par, o.vt.obj};
-        ++col;
-        ++total_sent;
-        run.last_vt_clock = t;
-      }
-      word = o.output;
-      ctrl = o.ctrl;
+    const ArrayInput<W> in = host_offer(stream, next, holding, t, pacing);
+    const bool vt_ready = !stall_hit(pacing.seed, std::uint64_t(t), 1, pacing.vt_stall_percent);
+    if (!vt_ready && array_drives_vt(pp, in)) {
+      holding = in.ctrl.valid;
+      observer.on_freeze(t);
+      continue;
     }
-    if (drivers > 1) ++run.vt_conflicts;
+    holding = false;
+    if (in.ctrl.valid && next < stream.size()) ++next;
+    clock_array(pp, in, t, columns, run, sent, observer);
     const PpState<W>& tail = pp.back();
-    if (total_sent == std::int64_t(columns) * n_pp && tail.clock.value() == 4 &&
+    if (std::all_of(sent.begin(), sent.end(), [&](int c) { return c == columns; }) && tail.clock.value() == 4 &&
         hls::command_kind(tail.RGI) == hls::kKindCol) {
       run.clocks = t;
       return run;
     }
   }
   throw std::logic_error("run_systolic_array: the array did not drain");
+}
+
+// The same from power-on (pp_reset with RGeps = eps).
+template <int W, class Observer = NoArrayObserver>
+ArrayRun<W> run_array_stream(const std::vector<StreamCode<W>>& stream, const Word<W>& eps, int columns, int n_pp,
+                             const ArrayPacing& pacing = {}, Observer&& observer = Observer{}) {
+  std::vector<PpState<W>> pp(static_cast<std::size_t>(n_pp));
+  for (PpState<W>& st : pp) hls::pp_reset(st, eps);
+  return run_array_frame(pp, stream, columns, pacing, std::forward<Observer>(observer));
+}
+
+// The same from a scene: its frame's stream (build_frame_stream).
+template <int W>
+ArrayRun<W> run_systolic_array(const InvparamScene<W>& scene, int columns, int n_pp,
+                               StreamMode mode = StreamMode::kFull, const ArrayPacing& pacing = {}) {
+  if (columns < 1 || n_pp < 1) throw std::invalid_argument("run_systolic_array: columns and n_pp must be >= 1");
+  return run_array_stream(build_frame_stream(scene, columns, n_pp, mode), scene.eps, columns, n_pp, pacing);
 }
 
 // ---- Frame time and throughput (systolic_array.cpp) ---------------------------------------------

@@ -43,24 +43,14 @@
 #include <memory>
 #include <vector>
 
+#include "common/stall_pattern.hpp"
 #include "hls/quadtree/mask_memory.hpp"
 #include "hls/quadtree/pe.hpp"
 #include "quadtree/architecture.hpp"
 
 namespace cig::quad {
 
-// The verification stall pattern: a hash of (seed, cycle, stream), true in `percent` % of cycles.
-inline bool stall_hit(std::uint32_t seed, std::uint64_t cycle, std::uint32_t stream, int percent) {
-  if (percent <= 0) return false;
-  std::uint64_t x =
-      (std::uint64_t(seed) << 32) ^ (cycle * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(stream) * 0xD1B54A32D192ED03ull);
-  x ^= x >> 30;
-  x *= 0xBF58476D1CE4E5B9ull;
-  x ^= x >> 27;
-  x *= 0x94D049BB133111EBull;
-  x ^= x >> 31;
-  return int(x % 100u) < percent;
-}
+using cig::stall_hit;  // the verification stall pattern (common/stall_pattern.hpp)
 
 struct ArchConfig {
   int fifo_depth = 2;

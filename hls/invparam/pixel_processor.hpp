@@ -4,10 +4,13 @@
 // tokens.hpp.
 //
 // State: the seed's registers and flip-flops, named as in the seed, plus the control unit's
-// clock-within-token counter and the Ctrl flip-flop. Per clock the PP puts RGres on Output (the
-// word it took one clock before: tokens pass with a delay of one clock), Ctrl's start line one
-// clock delayed, and the VT bus (valid while a T_Col's clock 2 passes: RGpar and RGobj of the
-// column just finished). Every register transfer follows the seed's clock-by-clock text:
+// clock-within-token counter and the Ctrl flip-flops. Per clock the PP puts RGres on Output (the
+// word it took one clock before: tokens pass with a delay of one clock), Ctrl's lines one clock
+// delayed, and the VT bus (valid while a T_Col's clock 2 passes: RGpar and RGobj of the column
+// just finished). A bubble on Input (Ctrl valid low) is not a clock of any token: every register
+// holds (RGres too: a Pln's clock 4 still reads the sum of its clock 3) and only the delayed valid
+// line falls, so the PP below sees the bubble one clock later. Every register transfer follows the
+// seed's clock-by-clock text:
 //   clock 1 (all): Input -> RGres, its top 5 bits -> RGI.
 //   Col  2: Input -> RGparP (background); RGpar, RGobj on VT.   3: RGtin = MAX, RGtout = RGobj =
 //        the minimal code, RGpar = RGparP.   4: nothing.
@@ -39,6 +42,7 @@ struct PpState {
   Command RGI;
   bool Tz = false, Ts = false, Tc = false;  // z, s, c delayed one clock
   bool Tctrl = false;                       // Ctrl's start line, delayed with RGres
+  bool Tvalid = false;                      // Ctrl's valid line, delayed with RGres
   UInt<3> clock;                            // clock within the token: 0 idle, 1..4
 };
 
@@ -73,6 +77,15 @@ CIG_HLS_INLINE UInt<3> pp_next_clock(const PpState<W>& st, const PpCtrl& ctrl) {
   if (ctrl.start) return UInt<3>(1);
   if (c >= 1 && c <= 3 && command_kind(st.RGI) != kKindEmpty) return UInt<3>(c + 1);
   return UInt<3>(0);
+}
+
+// Whether the PP drives VT in this clock: a valid word that is clock 2 of a T_Col other than the
+// frame's initialising one. A function of the state and Input's Ctrl only (the array's VT
+// handshake needs it before the clock edge).
+template <int W>
+CIG_HLS_INLINE bool pp_drives_vt(const PpState<W>& st, const PpCtrl& ctrl) {
+  return ctrl.valid && pp_next_clock(st, ctrl).value() == 2 && command_kind(st.RGI) == kKindCol &&
+         !command_first(st.RGI);
 }
 
 template <int W>
@@ -153,6 +166,12 @@ CIG_HLS_INLINE PpOutputs<W> pp_clock(PpState<W>& st, const Word<W>& input, const
   PpOutputs<W> out;
   out.output = st.RGres;
   out.ctrl.start = st.Tctrl;
+  out.ctrl.valid = st.Tvalid;
+  if (!ctrl.valid) {  // a bubble: nothing but the delayed Ctrl lines moves
+    st.Tctrl = false;
+    st.Tvalid = false;
+    return out;
+  }
   const UInt<3> next = pp_next_clock(st, ctrl);
   const unsigned clock = unsigned(next.value());
   Word<W> sum = input;  // SM passes Input unless a Pln's clock 3 adds RGh
@@ -168,6 +187,7 @@ CIG_HLS_INLINE PpOutputs<W> pp_clock(PpState<W>& st, const Word<W>& input, const
   st.RGres = sum;
   st.Tc = c;
   st.Tctrl = ctrl.start;
+  st.Tvalid = true;
   st.clock = next;
   return out;
 }

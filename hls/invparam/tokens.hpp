@@ -24,8 +24,11 @@
 //          of empty codes. The seed's "empty tokens" that pad a column are groups of 4 empty codes.
 //
 // The Ctrl bus (seed: "synchronisation of the PPs by signals passed between PPs on Ctrl") carries
-// one line here, start: the word on Input is word 1 of a token. It travels with the word (one
-// clock per PP) and restarts the PP's clock-within-token counter.
+// two lines here, travelling with the word (one clock per PP): start, the word on Input is word 1
+// of a token (it restarts the PP's clock-within-token counter); valid, there is a word at all. An
+// invalid word (a bubble: the host had nothing to send) changes no register but the PP's delayed
+// valid line, so a bubble may fall anywhere, even inside a token, and moves down the chain at one
+// PP per clock like a word; the seed's stream is the case of no bubbles.
 //
 // Word fields are read and written only with word.hpp's operations (Word<W> may become a wider
 // type): x + x is a left shift by one and the sign flag s reads the top bit, so the command field
@@ -48,6 +51,7 @@ constexpr unsigned kCmdAz = 0x02, kCmdAs = 0x01, kCmdFirst = 0x01;
 
 struct PpCtrl {
   bool start = false;  // word 1 of a token is on Input
+  bool valid = true;   // a word is on Input (false: a bubble)
 };
 
 CIG_HLS_INLINE unsigned command_kind(const Command& c) { return unsigned(c.value() >> 3); }
