@@ -85,13 +85,30 @@ module ip_pe #(
 
   // ---- SM: Input + RGh in a T_Pln's clock 3, else Input passes ------------------------------------
   logic [W-1:0] sum;
-  assign sum = in_word_i + (pln3 ? rg_h_q : '0);
+  logic         sum_nonzero, sum_negative;
+  ip_sm #(
+    .W(W)
+  ) u_sm (
+    .a_i  (in_word_i),
+    .b_i  (pln3 ? rg_h_q : '0),
+    .sum_o(sum),
+    .z_o  (sum_nonzero),
+    .s_o  (sum_negative)
+  );
 
   // ---- Cm: c = A > B (signed), operands by the clock (pp_pln_decide, pp_obj_clock) ---------------
   // Pln clock 4: RGres against RGeps (Az = 0), RGtout (an exit plane) or RGtin (an entry plane);
   // Obj clock 2: RGtin > RGtout; clock 3: MAX > RGtin; clock 4: RGtin > RGobj.
   logic [W-1:0] cm_a, cm_b;
   logic         cm_enable, c;
+  ip_cm #(
+    .W(W)
+  ) u_cm (
+    .enable_i(cm_enable),
+    .a_i     (cm_a),
+    .b_i     (cm_b),
+    .c_o     (c)
+  );
   always_comb begin
     cm_a = rg_res_q;
     cm_b = rg_tin_q;
@@ -113,7 +130,6 @@ module ip_pe #(
       cm_b = rg_obj_q;
       cm_enable = tc_q;
     end
-    c = cm_enable && ($signed(cm_a) > $signed(cm_b));
   end
 
   // ---- Register transfers (pp_col_clock, pp_pln_clock, pp_pln_decide, pp_obj_clock) --------------
@@ -126,8 +142,8 @@ module ip_pe #(
     rg_par_d = rg_par_q;
     rg_parp_d = rg_parp_q;
     rg_i_d = next_clock == KW'(1) ? in_word_i[W-1 -: CW] : rg_i_q;
-    tz_d = pln3 ? sum != '0 : tz_q;
-    ts_d = pln3 ? sum[W-1] : ts_q;
+    tz_d = pln3 ? sum_nonzero : tz_q;
+    ts_d = pln3 ? sum_negative : ts_q;
     tc_d = c;
     if (col2) begin
       rg_parp_d = in_word_i[PW-1:0];

@@ -3,7 +3,9 @@
 # test), verif/cosim (the Verilated array) and tools/synth_report.sh (which reads the names below).
 set(CIG_IP_RTL_SV_NAMES
   ip_pkg.sv
+  ip_cm.sv
   ip_pe.sv
+  ip_sm.sv
   ip_array.sv
 )
 list(TRANSFORM CIG_IP_RTL_SV_NAMES PREPEND ${CMAKE_CURRENT_LIST_DIR}/ OUTPUT_VARIABLE CIG_IP_RTL_SV)
