@@ -7,7 +7,10 @@
 #   raster     a whole architecture, small: qt_raster N_LOG2 = 4, TREE_LEVELS = 2 (2p2t: 7 PEs,
 #              4 pixel processors), the coarse format's widths (G = 6, PW = 35, GW = 20), 2 light
 #              covers, a 16-entry fog table (FOG_CODE_BITS = 4), so that its memories stay small
-#              and the run takes minutes on 2 cores.
+#              and the run takes minutes on 2 cores;
+#   ip_pe_57   stage F's pixel processor (ip_pe) at W = 57 bits (the seed's word for 10 km);
+#   ip_pe_64   the same at W = 64 (the seed's word for 100 km, its "six 64-bit registers");
+#   ip_array_16  ip_array of N_PP = 16 PPs at W = 64 (the chain, the VT bus, the handshake).
 # Flow: read_verilog -sv; hierarchy -top; proc; opt; wreduce; peepopt; alumacc; opt;
 # memory -nomap (the coarse-grain part of `synth`, which narrows adders and multipliers before they
 # are mapped, without its SAT-based `share`, which runs for many minutes on the pixel processor);
@@ -27,15 +30,21 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/build-rtl/synth}
 shift || true
 designs=("$@")
-[ ${#designs[@]} -gt 0 ] || designs=(pe_mid pe_pixel raster)
+[ ${#designs[@]} -gt 0 ] || designs=(pe_mid pe_pixel raster ip_pe_57 ip_pe_64 ip_array_16)
 mkdir -p "$out"
 command -v yosys >/dev/null || { echo "synth_report: yosys not found (tools/deps.sh installs it)" >&2; exit 2; }
 
-# The RTL sources in compile order (the package first): the list rtl/qt_sources.cmake keeps for
-# every consumer, one file name per line between `set(CIG_RTL_SV_NAMES` and `)`.
-sources=$(sed -n '/^set(CIG_RTL_SV_NAMES/,/^)/s|^ *\(qt_[a-z0-9_]*\.sv\)$|'"$root"'/rtl/\1|p' "$root/rtl/qt_sources.cmake")
-[ -n "$sources" ] || { echo "synth_report: no sources in $root/rtl/qt_sources.cmake" >&2; exit 2; }
-sources=$(echo $sources)
+# The RTL sources in compile order (the package first): the lists rtl/qt_sources.cmake and
+# rtl/ip_sources.cmake keep for every consumer, one file name per line between
+# `set(<LIST>_NAMES` and `)`.
+list_sources() {  # list_sources <cmake file> <list name> <file prefix>
+  local s
+  s=$(sed -n "/^set($2/,/^)/s|^ *\($3_[a-z0-9_]*\.sv\)\$|$root/rtl/\1|p" "$root/rtl/$1")
+  [ -n "$s" ] || { echo "synth_report: no sources in $root/rtl/$1" >&2; exit 2; }
+  echo $s
+}
+qt_sources=$(list_sources qt_sources.cmake CIG_RTL_SV_NAMES qt)
+ip_sources=$(list_sources ip_sources.cmake CIG_IP_RTL_SV_NAMES ip)
 
 # top and -chparam arguments of a design.
 design_args() {
@@ -43,7 +52,19 @@ design_args() {
     pe_mid)   echo "qt_pe -chparam N_LOG2 9 -chparam LEVEL 5" ;;
     pe_pixel) echo "qt_pe -chparam N_LOG2 9 -chparam LEVEL 9" ;;
     raster)   echo "qt_raster -chparam N_LOG2 4 -chparam TREE_LEVELS 2 -chparam G 6 -chparam PW 35 -chparam GW 20 -chparam LIGHT_COVERS 2 -chparam FOG_CODE_BITS 4" ;;
-    *) echo "synth_report: unknown design '$1' (pe_mid, pe_pixel, raster)" >&2; exit 2 ;;
+    ip_pe_57) echo "ip_pe" ;;   # W by design_pre: hierarchy -chparam on a top with submodules
+    ip_pe_64) echo "ip_pe" ;;   # trips an assertion of yosys 0.23 (rtl/README.md)
+    ip_array_16) echo "ip_array -chparam W 64 -chparam N_PP 16" ;;
+    *) echo "synth_report: unknown design '$1' (pe_mid, pe_pixel, raster, ip_pe_57, ip_pe_64, ip_array_16)" >&2; exit 2 ;;
+  esac
+}
+
+# Commands before `hierarchy` (parameters set on the module itself).
+design_pre() {
+  case "$1" in
+    ip_pe_57) echo "chparam -set W 57 ip_pe" ;;
+    ip_pe_64) echo "chparam -set W 64 ip_pe" ;;
+    *) echo "" ;;
   esac
 }
 
@@ -51,10 +72,12 @@ design_args() {
 for d in "${designs[@]}"; do
   args=$(design_args "$d")
   top=${args%% *}
+  case "$top" in ip_*) sources=$ip_sources ;; *) sources=$qt_sources ;; esac
   log="$out/$d.log"
   # Pass 1: synthesis, statistics, the mapped netlist, the modules' parameters.
   cat > "$out/$d.ys" <<EOF
 read_verilog -sv $sources
+$(design_pre "$d")
 hierarchy -check -top $args
 proc
 opt_expr
@@ -114,7 +137,7 @@ EOF
     file == 2 && /^Longest topological path in/ { m = $5; l = $6; gsub(/[^0-9]/, "", l); ltp[m] = l; order[++n] = m; next }
     # mapped netlist: the parameters that tell instances of one module apart.
     file == 3 && /^module / { cur = $2; next }
-    file == 3 && /^  parameter \\(LEVEL|ROUTE_BY_QUADRANT|UNIT|DI|DJ|N_LOG2|TREE_LEVELS) / {
+    file == 3 && /^  parameter \\(LEVEL|ROUTE_BY_QUADRANT|UNIT|DI|DJ|N_LOG2|TREE_LEVELS|W|N_PP) / {
       p = $2; sub(/^\\/, "", p); v = $3; sub(/^1.1$/, "1", v); sub(/^1.0$/, "0", v)
       params[cur] = params[cur] (params[cur] == "" ? "" : ",") p "=" v; next
     }
@@ -122,7 +145,8 @@ EOF
       printf "design %s (top %s)\n", design, top
       printf "%-58s %6s %10s %13s %8s\n", "module", "inst", "cells", "transistors", "path"
       for (k = 1; k <= n; k++) {
-        m = order[k]; short = m; sub(/.*\\/, "", short)
+        # a module with parameters is $paramod...\\<name>[\\<parameters>]: its name is the second part
+        m = order[k]; np = split(m, part, "\\"); short = (m ~ /^\$paramod/) ? part[2] : part[np]
         i = (m in inst) ? inst[m] : 1
         label = short (params[m] != "" ? "(" params[m] ")" : "")
         rows[k] = sprintf("%-58s %6d %10d %13d %8d", label, i, cells[m] - subcells[m], tr[m], ltp[m])
@@ -131,6 +155,7 @@ EOF
       # rows by module name (insertion sort: a handful of rows)
       for (k = 2; k <= n; k++) { r = rows[k]; j = k - 1; while (j >= 1 && rows[j] > r) { rows[j + 1] = rows[j]; j-- } rows[j + 1] = r }
       for (k = 1; k <= n; k++) print rows[k]
+      if (total_cells == "") { total_cells = cells[order[1]]; total_tr = tr[order[1]] }  # one module: no hierarchy section
       printf "%-58s %6s %10d %13d %8d\n", "TOTAL " top " (hierarchy)", "", total_cells, total_tr, whole_path
     }
   ' "$out/$d.stat.txt" "$out/$d.ltp.txt" "$out/$d.mapped.il" > "$out/$d.txt"
