@@ -4,7 +4,7 @@
 # verif/mutation/rtl_mutants.tsv and model_mutants.tsv applied to a copy in build/mutation, only
 # the Verilated models (or the harness) rebuilt, the co-simulation tests run, a table printed.
 # Options are mutate.py's (--only ID,ID  --markdown  --check  --build DIR). Configures build/
-# (CIG_WITH_RTL=ON) if it has not been. Whole list: about an hour on 2 cores.
+# (CIG_WITH_RTL=ON) if it has not been. Whole list: about half an hour on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build
