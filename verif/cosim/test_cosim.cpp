@@ -70,7 +70,23 @@ void trace_on_demand(RtlRunner& rtl) {
   rtl.trace_to(std::string(dir) + "/" + info->name() + "_" + std::to_string(run++) + ".fst");
 }
 
+// The mutation test's builds (verif/mutation: CIG_COSIM_SOME_CONFIGS) have only the
+// configurations a mutant names, and a run skips the others; in every other build a missing
+// configuration fails (make_rtl_runner gives nullptr).
+bool configuration_missing(int raster_log2, int tree_levels) {
+#ifdef CIG_COSIM_SOME_CONFIGS
+  for (const RtlConfig& c : rtl_configs())
+    if (c.raster_log2 == raster_log2 && c.tree_levels == tree_levels) return false;
+  return true;
+#else
+  (void)raster_log2;
+  (void)tree_levels;
+  return false;
+#endif
+}
+
 void expect_equal(const ScreenFrame& frame, int raster_log2, int tree_levels, const StallConfig& stalls = {}) {
+  if (configuration_missing(raster_log2, tree_levels)) return;
   SCOPED_TRACE("raster " + std::to_string(1 << raster_log2) + ", tree levels " + std::to_string(tree_levels));
   auto rtl = make_rtl_runner(raster_log2, tree_levels);
   ASSERT_TRUE(rtl != nullptr);
@@ -157,6 +173,7 @@ TEST(Cosim, StallsRandomGapsAndBackPressure) {
 // for record and cycle for cycle with the option on (and off, above); on gives the image of off in
 // no more cycles.
 void expect_start_window(const ScreenFrame& f, int raster_log2, int tree_levels, StallConfig stalls = {}) {
+  if (configuration_missing(raster_log2, tree_levels)) return;
   SCOPED_TRACE("start window, raster " + std::to_string(1 << raster_log2) + ", tree levels " +
                std::to_string(tree_levels));
   auto rtl = make_rtl_runner(raster_log2, tree_levels);
@@ -242,6 +259,7 @@ TEST(Cosim, AirfieldFrames) {
 TEST(Cosim, EmptyFrameTakesTheFrameStartCycleOnBothSides) {
   for (int t = 1; t <= 2; ++t)
     for (const StallConfig stalls : {StallConfig{}, StallConfig{7, 50, 50}}) {
+      if (configuration_missing(6, t)) continue;
       SCOPED_TRACE("tree levels " + std::to_string(t) + ", stalls " + std::to_string(stalls.input_gap_percent));
       auto rtl = make_rtl_runner(6, t);
       const CosimResult r = cosim_frame(empty_frame(64), *rtl, RtlConfig{6, t}, stalls);

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Verilates the mutated RTL copy for mutation testing (CMakeLists.txt here, custom command):
+#   build_models.sh VERILATOR MUTANT_DIR COSIM_TB OUT_DIR
+# MUTANT_DIR holds rtl/ (the copy), sources.txt (rtl/qt_sources.cmake's order) and configs (the
+# configurations to build, "6_1 6_2": N_LOG2 _ TREE_LEVELS). Each configuration gets the
+# co-simulation's Verilator options and prefix (Vqt_raster_n<N>_t<T>, what rtl_runner_mutant.cpp
+# includes) without FST tracing; the generated C++ is compiled at -O0 by Verilator's own make
+# (these models run the small N = 64 tests once: build time is what counts). A configuration not
+# asked for is removed, so that rtl_runner_mutant.cpp (__has_include) cannot pick up a stale one.
+# Output: OUT_DIR/libcig_rtl_mutant_models.a (every configuration's classes) and OUT_DIR/stamp.
+set -euo pipefail
+verilator=$1 mut=$2 tb=$3 out=$4
+read -r -a names < "$mut/sources.txt"
+read -r -a configs < "$mut/configs"
+sources=()
+for n in "${names[@]}"; do sources+=("$mut/rtl/$n"); done
+mkdir -p "$out"
+for old in "$out"/obj_*; do
+  [ -d "$old" ] || continue
+  keep=0
+  for c in "${configs[@]}"; do [ "$old" = "$out/obj_$c" ] && keep=1; done
+  [ $keep = 1 ] || rm -rf "$old"
+done
+build_one() {
+  local c=$1 n=${1%_*} t=${1#*_}
+  local prefix=Vqt_raster_n${n}_t${t} dir=$out/obj_$1
+  rm -rf "$dir"
+  "$verilator" --cc --prefix "$prefix" --top-module qt_raster_cosim_tb -Mdir "$dir" \
+    -GN_LOG2="$n" -GTREE_LEVELS="$t" --x-assign fast --x-initial fast -O3 "${sources[@]}" "$tb"
+  make -s -j"$jobs" -C "$dir" -f "$prefix.mk" OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0 CXXFLAGS=-w "${prefix}__ALL.a"
+}
+jobs=$((${#configs[@]} > 1 ? 1 : 2))   # two compile jobs in all (the machine's cores)
+pids=()
+for c in "${configs[@]}"; do
+  build_one "$c" > "$out/build_$c.log" 2>&1 &
+  pids+=($!)
+done
+status=0
+for k in "${!pids[@]}"; do
+  if ! wait "${pids[$k]}"; then
+    status=1
+    echo "build_models.sh: configuration ${configs[$k]} failed:" >&2
+    tail -30 "$out/build_${configs[$k]}.log" >&2
+  fi
+done
+[ $status = 0 ] || exit 1
+rm -f "$out/libcig_rtl_mutant_models.a"
+objects=()
+for c in "${configs[@]}"; do objects+=("$out/obj_$c"/*.o); done
+ar -rcs "$out/libcig_rtl_mutant_models.a" "${objects[@]}"
+touch "$out/stamp"
