@@ -18,7 +18,8 @@ void Commands::add_to(CLI::App& app) {
   wordlength.add_to(app);
   // Listed for --help; `cig cosim ...` never reaches the parser (main.cpp forwards it to cig-cosim).
   app.add_subcommand("cosim",
-                     "co-simulate the quadtree RTL against the kernels and the architecture model (runs cig-cosim; "
+                     "co-simulate the quadtree RTL against the kernels and the architecture model, or with "
+                     "--processor invparam the inverse-parameter array RTL against its model (runs cig-cosim; "
                      "`cig cosim --help` for its options)")
       ->allow_extras();
 }

@@ -3,7 +3,10 @@
 //   * random/6p, random/4p2t: 150 random polygons on a 64-line raster (test_cosim's kind);
 //   * overlap/6p: scenes/small/overlap.polys.json;
 //   * airfield/9p, airfield/7p2t: the centre channel of frame 0 of scenes/airfield.json;
-//   * depth10/9p: scenes/stress/depth10.polys.json.
+//   * depth10/9p: scenes/stress/depth10.polys.json;
+//   * invparam/polyhedra/w64n64: the inverse-parameter array (ip_array, W = 64, N_PP = 64, its
+//     model Verilated for speed) alone on scenes/polyhedra.json frame 0, centre channel, set up on a
+//     64 x 64 lattice; frames back to back without reset; counters cycles/s, faces/s, samples/s.
 // The setup kernel's level-0 windows are built once (not timed); each iteration runs one frame:
 // the table writes (the fog table only the first time), the frame, the read-out of every pixel.
 // The cycles/s counter counts the frame's cycles only, over the whole iteration's time.
@@ -19,6 +22,7 @@
 
 #include "bench/bench_inputs.hpp"
 #include "cosim.hpp"
+#include "ip_cosim.hpp"
 
 namespace {
 
@@ -81,6 +85,50 @@ void run_rtl(benchmark::State& state, const ScreenFrame& (*input)(), int raster_
   state.counters["root_windows"] = double(roots.size());
 }
 
+// The array's input: the frame's stream (built once, not timed).
+struct IpInput {
+  std::vector<cig::invparam::StreamCode<64>> stream;
+  int columns = 0;
+  std::int64_t faces = 0;
+  cig::hls::Word<64> eps;
+};
+const IpInput& polyhedra_ip_input() {
+  static const IpInput input = [] {
+    const cig::Scene scene = cig::load_scene(cig::bench::source_path("scenes/polyhedra.json"));
+    const cig::ScenePipeline pipeline(scene);
+    nlohmann::ordered_json rep;
+    const cig::ScreenFrame f = pipeline.geometry(0, 1, rep);
+    const cig::InvparamSetup<64> setup = cig::invparam_setup<64>(f, cig::InvparamLattice{64, 0});
+    const cig::invparam::InvparamScene<64> s = cig::cosim::invparam_scene_of(setup);
+    IpInput in;
+    in.columns = 64;
+    in.stream = cig::invparam::build_frame_stream(s, in.columns, 64, cig::invparam::StreamMode::kFull);
+    in.faces = std::int64_t(s.faces.size());
+    in.eps = s.eps;
+    return in;
+  }();
+  return input;
+}
+
+void run_ip_rtl(benchmark::State& state) {
+  auto rtl = cig::cosim::make_fast_ip_rtl(64, 64);
+  if (!rtl) rtl = cig::cosim::make_ip_rtl(64, 64);
+  if (!rtl) {
+    state.SkipWithError("this build has no such RTL configuration");
+    return;
+  }
+  const IpInput& in = polyhedra_ip_input();
+  rtl->reset(cig::cosim::word_bits<64>(in.eps));
+  double cycles = 0;
+  for (auto _ : state) cycles = double(cig::cosim::ip_rtl_run_frame<64>(*rtl, in.stream, in.columns));
+  const double n = double(state.iterations());
+  state.counters["cycles/s"] = benchmark::Counter(cycles * n, benchmark::Counter::kIsRate);
+  state.counters["faces/s"] = benchmark::Counter(double(in.faces) * n, benchmark::Counter::kIsRate);
+  state.counters["samples/s"] = benchmark::Counter(64.0 * in.columns * n, benchmark::Counter::kIsRate);
+  state.counters["cycles"] = cycles;
+  state.counters["faces"] = double(in.faces);
+}
+
 void register_all() {
   struct Case {
     const char* name;
@@ -93,6 +141,7 @@ void register_all() {
         Case{"rtl/airfield/7p2t", &cig::bench::airfield_frame, 9, 2},
         Case{"rtl/depth10/9p", &cig::bench::depth10_frame, 9, 1}})
     cig::bench::register_case(c.name, [c](benchmark::State& s) { run_rtl(s, c.frame, c.n, c.t); });
+  cig::bench::register_case("rtl/invparam/polyhedra/w64n64", run_ip_rtl);
 }
 
 }  // namespace

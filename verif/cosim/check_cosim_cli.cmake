@@ -5,7 +5,13 @@
 #   3. an architecture the RTL build does not have: status 2, the rule named, no report written;
 #   4. a frame with more lit pixels than the RTL's light covers, with --trace: status 2 and no trace
 #      left behind;
-#   5. an empty polygon list: zero mismatches and one cycle on both sides.
+#   5. an empty polygon list: zero mismatches and one cycle on both sides;
+#   6. --processor invparam on scenes/polyhedra.json frame 0, channel 1 (N_PP = 8) with an FST trace
+#      and a report: exit 0, zero mismatches, equal cycles; frames 0..1 with input gaps and VT
+#      stalls: the same;
+#   7. bad options: status 2 and the option named (an option of the other processor, a
+#      configuration the build lacks, too many input gaps for the array, an unknown processor, a
+#      polygon list for the array).
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -70,4 +76,55 @@ string(JSON cr GET "${rep}" runs 0 cycles_rtl)
 if(NOT rc EQUAL 0 OR NOT cm EQUAL 1 OR NOT cr EQUAL 1)
   message(FATAL_ERROR "empty frame: status ${rc}, cycles model ${cm}, RTL ${cr}\n${out}\n${err}")
 endif()
-message(STATUS "ok:\n${out}")
+
+# 6. The inverse-parameter array.
+set(poly_scene ${SOURCE}/scenes/polyhedra.json)
+execute_process(COMMAND ${CIG} cosim ${poly_scene} --processor invparam --pps 8 --frame 0 --channel 1
+                        --trace ${WORK}/ip.fst --report ${WORK}/ip.json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE ip_out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT ip_out MATCHES "processor invparam, ip_array W=64, N_PP=8"
+   OR NOT ip_out MATCHES "all: [1-9][0-9]* values compared, 0 mismatches, 0 frame")
+  message(FATAL_ERROR "cig cosim --processor invparam exited with ${rc}\n${ip_out}\n${err}")
+endif()
+file(READ ${WORK}/ip.json rep)
+string(JSON mism GET "${rep}" mismatches)
+string(JSON cm GET "${rep}" runs 0 cycles_model)
+string(JSON cr GET "${rep}" runs 0 cycles_rtl)
+if(NOT mism EQUAL 0 OR NOT cm EQUAL cr OR cm LESS 100)
+  message(FATAL_ERROR "invparam report: mismatches ${mism}, cycles model ${cm}, RTL ${cr}")
+endif()
+file(SIZE ${WORK}/ip.fst fst_size)
+if(fst_size LESS 1000)
+  message(FATAL_ERROR "the invparam FST waveform has ${fst_size} bytes")
+endif()
+execute_process(COMMAND ${CIG} cosim ${poly_scene} --processor invparam --bits 57 --pps 16 --frames 0:1 --channel 1
+                        --input-gaps 30 --vt-stalls 40 --stall-seed 3
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "0 mismatches, 0 frame")
+  message(FATAL_ERROR "cig cosim --processor invparam with stalls exited with ${rc}\n${out}\n${err}")
+endif()
+
+# 7. Bad options: status 2, the option (or the rule) named, no report.
+foreach(case IN ITEMS
+    "--processor;invparam;--arch;5p|--arch: only with --processor quadtree"
+    "--processor;invparam;--output-stalls;10|--output-stalls: only with --processor quadtree"
+    "--vt-stalls;20|--vt-stalls: only with --processor invparam"
+    "--processor;invparam;--pps;9|--bits/--pps: the RTL build has no ip_array configuration W=64, N_PP=9"
+    "--processor;invparam;--input-gaps;80|--input-gaps: at most 75"
+    "--processor;invparam;--vt-stalls;90|--vt-stalls"
+    "--processor;systolic|--processor")
+  string(REPLACE "|" ";" parts "${case}")
+  list(POP_BACK parts expect)
+  execute_process(COMMAND ${CIG} cosim ${poly_scene} ${parts} --report ${WORK}/bad_ip.json
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${err}" "${expect}" at)
+  if(NOT rc EQUAL 2 OR at EQUAL -1 OR EXISTS ${WORK}/bad_ip.json)
+    message(FATAL_ERROR "cig cosim ${parts}: expected status 2 and '${expect}', no report; got ${rc}\n${out}\n${err}")
+  endif()
+endforeach()
+execute_process(COMMAND ${CIG} cosim ${polys} --processor invparam --report ${WORK}/bad_ip.json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "draws convex polyhedra" OR EXISTS ${WORK}/bad_ip.json)
+  message(FATAL_ERROR "a polygon list with --processor invparam: expected status 2; got ${rc}\n${out}\n${err}")
+endif()
+message(STATUS "ok:\n${out}\n${ip_out}")

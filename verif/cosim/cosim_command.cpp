@@ -1,6 +1,8 @@
-// cig cosim SCENE|POLYS [--arch STR] [--frame K | --frames A:B] [--channel C] [--trace FILE.fst]
-//                       [--stall-seed S] [--input-gaps P] [--output-stalls P]
+// cig cosim SCENE|POLYS [--processor quadtree] [--arch STR] [--frame K | --frames A:B] [--channel C]
+//                       [--trace FILE.fst] [--stall-seed S] [--input-gaps P] [--output-stalls P]
 //                       [--start-window screen|bbox] [--report FILE]
+// cig cosim SCENE --processor invparam [--bits W] [--pps N] [--frame K | --frames A:B] [--channel C]
+//                       [--trace FILE.fst] [--stall-seed S] [--input-gaps P] [--vt-stalls P] [--report FILE]
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -18,25 +20,45 @@ namespace cig::cli {
 
 void CosimCommand::add_options(CLI::App& app) {
   app.add_option("input", input, "scene or polygon list")->required();
-  app.add_option("--arch", arch,
-                 "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np");
+  app.add_option("--processor", processor,
+                 "quadtree (default: the raster processor, seed 004) or invparam (the inverse-parameter array, "
+                 "seed 002: a scene's polyhedra)")
+      ->check(CLI::IsMember({"quadtree", "invparam"}));
+  quadtree_only.push_back(app.add_option(
+      "--arch", arch, "architecture: one the RTL build has (np or kp(n-k)t with a 2-level tree); default np"));
   frame_opt = app.add_option("--frame", frame_k, "frame number (scenes; default 0)");
   app.add_option("--frames", frames_text, "inclusive frame range A:B (scenes)")->excludes(frame_opt);
   app.add_option("--channel", channel, "only this channel (scenes)")->check(CLI::Range(0, kMaxChannelIndex));
   app.add_option("--trace", trace_file, "write the RTL's waveform (FST) of the first image");
   app.add_option("--stall-seed", stall_seed, "seed of the verification stall pattern (default 1)");
-  app.add_option("--input-gaps", input_gaps, "percent of cycles the polygon port offers nothing (0..95)")
+  app.add_option("--input-gaps", input_gaps, "percent of cycles the input port offers nothing (0..95; invparam 0..75)")
       ->check(CLI::Range(0, 95));
-  app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")
-      ->check(CLI::Range(0, 95));
-  app.add_option("--start-window", start_window,
-                 "where a polygon's subdivision starts: screen (default, the seed) or bbox (its start window)")
-      ->check(CLI::IsMember({"screen", "bbox"}));
+  quadtree_only.push_back(
+      app.add_option("--output-stalls", output_stalls, "percent of cycles the pixel processors take nothing (0..95)")
+          ->check(CLI::Range(0, 95)));
+  quadtree_only.push_back(
+      app.add_option("--start-window", start_window,
+                     "where a polygon's subdivision starts: screen (default, the seed) or bbox (its start window)")
+          ->check(CLI::IsMember({"screen", "bbox"})));
+  invparam_only.push_back(
+      app.add_option("--vt-stalls", vt_stalls, "invparam: percent of cycles the VT consumer takes nothing (0..75)")
+          ->check(CLI::Range(0, 75)));
+  invparam_only.push_back(app.add_option("--bits", word_bits, "invparam: the word length W of the RTL (default 64)"));
+  invparam_only.push_back(app.add_option(
+      "--pps", pps, "invparam: pixel processors N_PP (default 64): frames set up on an N_PP x N_PP lattice"));
   app.add_option("--report", report_file, "write a JSON report");
   model_limit.add_to(&app);
 }
 
 int CosimCommand::run() {
+  const bool ip = processor == "invparam";
+  for (const CLI::Option* o : ip ? quadtree_only : invparam_only)
+    if (o->count() > 0)
+      throw InputError("", o->get_name(), std::string("only with --processor ") + (ip ? "quadtree" : "invparam"));
+  return ip ? run_invparam() : run_quadtree();
+}
+
+int CosimCommand::run_quadtree() {
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   const int raster = jobs.screen_frame(0).raster;

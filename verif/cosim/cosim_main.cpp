@@ -7,7 +7,8 @@
 
 int main(int argc, char** argv) {
   return cig::cli::guarded_main("cig", [&] {
-    CLI::App app{"cig cosim: co-simulate the quadtree RTL against the kernels and the architecture model"};
+    CLI::App app{
+        "cig cosim: co-simulate the quadtree RTL against the kernels and the architecture model, or the inverse-parameter array RTL against its clock-level model (--processor invparam)"};
     app.name("cig cosim");
     cig::cli::CosimCommand cosim;
     cosim.add_options(app);

@@ -1,0 +1,119 @@
+// cig cosim --processor invparam: a scene's frames (stage B's polyhedra, each set up on an
+// N_PP x N_PP lattice) through the Verilated ip_array and the clock-level model, back to back
+// without reset (ip_cosim.hpp); per frame the faces, samples, tokens, codes, the cycles of both,
+// the held cycles and the mismatches.
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_common.hpp"
+#include "cli/frame_jobs.hpp"
+#include "common/error.hpp"
+#include "cosim_command.hpp"
+#include "ip_cosim.hpp"
+
+namespace cig::cli {
+namespace {
+
+// The frames before any output: each must have polyhedra (or nothing at all) within the kernel's
+// capacities.
+std::vector<ScreenFrame> invparam_frames(const FrameJobs& jobs, const std::string& input) {
+  std::vector<ScreenFrame> frames;
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    ScreenFrame f = jobs.screen_frame(k);
+    const std::string where = "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k));
+    if (f.polyhedra.empty() && !f.polygons.empty())
+      throw InputError(input, where,
+                       "--processor invparam draws convex polyhedra (scene objects with \"polyhedron\": true); this "
+                       "image has " +
+                           std::to_string(f.polygons.size()) + " polygon(s) and no polyhedron");
+    try {
+      invparam_face_list(f);
+    } catch (const InputError& e) { throw InputError(input, where + ", " + e.where(), e.rule()); }
+    frames.push_back(std::move(f));
+  }
+  return frames;
+}
+
+cosim::IpRtlConfig pick_config(int bits, int pps) {
+  std::string have;
+  for (const cosim::IpRtlConfig& c : cosim::ip_rtl_configs()) {
+    if (c.w == bits && c.n_pp == pps) return c;
+    have += (have.empty() ? "" : "; ") + c.text();
+  }
+  throw InputError("", "--bits/--pps",
+                   "the RTL build has no ip_array configuration W=" + std::to_string(bits) +
+                       ", N_PP=" + std::to_string(pps) + " (it has: " + have + ")");
+}
+
+}  // namespace
+
+int CosimCommand::run_invparam() {
+  if (input_gaps > 75)
+    throw InputError("", "--input-gaps", "at most 75 with --processor invparam (the array would not drain in time)");
+  const cosim::IpRtlConfig cfg = pick_config(word_bits, pps);
+  const FrameJobs jobs =
+      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
+  const std::vector<ScreenFrame> frames = invparam_frames(jobs, input);
+  if (!report_file.empty()) check_output_file(report_file, "--report");
+  if (!trace_file.empty()) check_output_file(trace_file, "--trace");
+  auto rtl = cosim::make_ip_rtl(cfg.w, cfg.n_pp);
+  if (!trace_file.empty()) {
+    const auto parent = std::filesystem::path(trace_file).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    rtl->trace_to(trace_file);
+  }
+  const auto cosim = cosim::make_ip_frame_cosim(*rtl);
+  const invparam::ArrayPacing pacing{stall_seed, input_gaps, vt_stalls};
+  std::cout << "cig cosim: " << input << ", processor invparam, ip_array " << cfg.text() << " (a " << cfg.n_pp << " x "
+            << cfg.n_pp << " lattice), stalls: input gaps " << input_gaps << " %, VT stalls " << vt_stalls
+            << " % (seed " << stall_seed << ")\n";
+  std::cout
+      << " frame  ch  faces  samples  tokens   codes  RTL cycles  model cycles    held  mismatches  RTL cycles/s\n";
+  nlohmann::ordered_json rep;
+  rep["command"] = "cosim";
+  rep["input"] = input;
+  rep["processor"] = "invparam";
+  rep["word_bits"] = cfg.w;
+  rep["pixel_processors"] = cfg.n_pp;
+  rep["runs"] = nlohmann::ordered_json::array();
+  long long checks = 0, mismatches = 0, bad_cycles = 0;
+  std::string first;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const cosim::IpFrameResult r = cosim->run(frames[k], pacing);
+    const double speed = r.seconds > 0 ? double(r.rtl_cycles) / r.seconds : 0;
+    std::cout << std::setw(6) << jobs.frame(k) << std::setw(4) << jobs.channel(k) << std::setw(7) << r.faces
+              << std::setw(9) << r.samples << std::setw(8) << r.tokens << std::setw(8) << r.codes << std::setw(12)
+              << r.rtl_cycles << std::setw(14) << r.model_cycles << std::setw(8) << r.held_cycles << std::setw(12)
+              << r.mismatches << std::setw(14) << std::llround(speed) << "\n";
+    checks += r.checks;
+    mismatches += r.mismatches;
+    bad_cycles += r.rtl_cycles == r.model_cycles ? 0 : 1;
+    if (first.empty() && !r.first.empty()) first = r.first;
+    rep["runs"].push_back({{"frame", jobs.frame(k)},
+                           {"channel", jobs.channel(k)},
+                           {"faces", r.faces},
+                           {"samples", r.samples},
+                           {"tokens", r.tokens},
+                           {"codes", r.codes},
+                           {"cycles_rtl", r.rtl_cycles},
+                           {"cycles_model", r.model_cycles},
+                           {"held_cycles", r.held_cycles},
+                           {"vt_hits", r.vt_hits},
+                           {"checks", r.checks},
+                           {"mismatches", r.mismatches},
+                           {"first_mismatch", r.first}});
+  }
+  std::cout << "all: " << checks << " values compared, " << mismatches << " mismatches, " << bad_cycles
+            << " frame(s) with a cycle mismatch\n";
+  if (!first.empty()) std::cout << "first mismatch: " << first << "\n";
+  rep["checks"] = checks;
+  rep["mismatches"] = mismatches;
+  rep["cycle_mismatches"] = bad_cycles;
+  if (!report_file.empty()) write_text_file(report_file, report_text(rep));
+  return mismatches == 0 && bad_cycles == 0 ? 0 : 1;
+}
+
+}  // namespace cig::cli

@@ -1,0 +1,319 @@
+// Lock-step co-simulation of the inverse-parameter array RTL (rtl/ip_array.sv, Verilated inside
+// ip_array_cosim_tb.sv) against the clock-level model (cmodel/invparam/systolic_array.hpp,
+// run_array_frame with the PP of hls/invparam/pixel_processor.hpp): the same frame stream, with
+// the same input gaps and VT back-pressure (ArrayPacing, stall_hit), goes through both, and every
+// cycle is compared while the model runs (its observer steps the RTL):
+//   * every PP's Output word (RGres) and delayed Ctrl lines (start, valid): every token at every PP;
+//   * the VT bus: which PP drives it (or none), its par and obj, in advancing and in held cycles;
+//   * the handshake: in_ready_o low exactly in the cycles the model holds (then vt_valid_o high);
+//   * col_done_o (the last PP does clock 4 of a T_Col) and the frame's cycle count.
+// The RTL's stimulus is computed from the RTL's own in_ready_o (host_offer: a word not taken stays
+// offered), not copied from the model. Frames run back to back without reset: the model keeps its
+// chain (run_array_frame's `pp`), the RTL its registers. The first mismatch is reported with the
+// frame, the cycle, the PP, the signal, the expected and the obtained value.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "frame/screen_frame.hpp"
+#include "invparam/face_setup.hpp"
+#include "invparam/systolic_array.hpp"
+
+namespace cig::cosim {
+
+// ---- The Verilated configurations (ip_rtl_runner.cpp) -------------------------------------------
+
+struct IpRtlConfig {
+  int w = 64, n_pp = 64;
+  std::string text() const { return "W=" + std::to_string(w) + ", N_PP=" + std::to_string(n_pp); }
+};
+std::vector<IpRtlConfig> ip_rtl_configs();
+
+// One Verilated ip_array, W <= 64: words are the low W bits of a std::uint64_t.
+class IpRtl {
+ public:
+  virtual ~IpRtl() = default;
+  virtual int w() const = 0;  // the model's public parameters (ip_array_cosim_tb)
+  virtual int n_pp() const = 0;
+  // Asynchronous reset, then one configuration cycle that writes RGeps of every PP.
+  virtual void reset(std::uint64_t eps) = 0;
+  // One cycle: its stimulus, then the edge that starts it; the outputs below then show this cycle,
+  // before its own clock edge (the next call's).
+  virtual void cycle(bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) = 0;
+  virtual bool in_ready() const = 0;
+  virtual bool vt_valid() const = 0;
+  virtual int vt_pp() const = 0;
+  virtual std::uint32_t vt_par() const = 0;
+  virtual std::uint64_t vt_obj() const = 0;
+  virtual bool col_done() const = 0;
+  virtual std::uint64_t pp_word(int k) const = 0;
+  virtual bool pp_start(int k) const = 0;
+  virtual bool pp_valid(int k) const = 0;
+  virtual void trace_to(const std::string& fst_file) = 0;  // FST of the following cycles
+};
+// nullptr when this build has no such configuration.
+std::unique_ptr<IpRtl> make_ip_rtl(int w, int n_pp);
+// The benchmark's model (W = 64, N_PP = 64, Verilated for speed, no tracing); in cig_cosim_fast.
+std::unique_ptr<IpRtl> make_fast_ip_rtl(int w, int n_pp);
+
+// ---- One frame's result -----------------------------------------------------------------------
+
+struct IpFrameResult {
+  std::int64_t samples = 0, codes = 0, tokens = 0, faces = 0;
+  std::int64_t model_cycles = 0, rtl_cycles = 0;
+  std::int64_t held_cycles = 0, vt_results = 0;
+  std::int64_t vt_hits = 0;  // VT results with an object (RGobj != 0)
+  std::int64_t checks = 0, mismatches = 0;
+  std::string first;  // the first mismatch ("" if none)
+  double seconds = 0;
+  bool ok() const { return mismatches == 0 && model_cycles == rtl_cycles; }
+};
+
+template <int W>
+std::uint64_t word_bits(const hls::Word<W>& w) {
+  static_assert(W <= 64, "the harness carries words in 64 bits");
+  return W == 64 ? w.low_limb() : w.low_limb() & ((std::uint64_t(1) << W) - 1);
+}
+
+// Tokens of a stream: codes that start a T_Pln, T_Obj or T_Col (the empty codes are not counted).
+template <int W>
+std::int64_t stream_tokens(const std::vector<invparam::StreamCode<W>>& s) {
+  std::int64_t n = 0;
+  for (const auto& c : s) n += c.start && c.word.low_limb() != 0 ? 1 : 0;
+  return n;
+}
+
+namespace detail {
+
+// The comparisons' bookkeeping: counts, and the first mismatch in words.
+class IpChecker {
+ public:
+  IpChecker(IpFrameResult& r, int frame) : r_(r), frame_(frame) {}
+  void expect(std::int64_t cycle, int pp, const char* signal, std::uint64_t expected, std::uint64_t got) {
+    ++r_.checks;
+    if (expected == got) return;
+    if (r_.mismatches++ == 0) {
+      std::ostringstream o;
+      o << "frame " << frame_ << ", cycle " << cycle << (pp >= 0 ? ", PP " + std::to_string(pp) : std::string()) << ", "
+        << signal << ": expected 0x" << std::hex << expected << ", got 0x" << got;
+      r_.first = o.str();
+    }
+  }
+
+ private:
+  IpFrameResult& r_;
+  int frame_;
+};
+
+// The host's side of the RTL (the model's host_offer on the RTL's own handshake): the stream with
+// the pacing's input gaps, a word not taken offered again, idle empty codes after the stream; the
+// col_done_o pulses counted up to the frame's end (the (columns + 1)-th, counting the initialising
+// T_Col).
+template <int W>
+class IpHost {
+ public:
+  IpHost(IpRtl& rtl, const std::vector<invparam::StreamCode<W>>& stream, int columns,
+         const invparam::ArrayPacing& pacing)
+      : rtl_(rtl), stream_(stream), columns_(columns), pacing_(pacing) {}
+  // Runs cycle t (t = cycles() + 1); returns what was offered.
+  invparam::ArrayInput<W> step(std::int64_t t) {
+    if (t != t_ + 1) throw std::logic_error("ip cosim: the RTL and the model are out of step");
+    const invparam::ArrayInput<W> in = invparam::host_offer(stream_, next_, holding_, t, pacing_);
+    const bool vt_ready = !stall_hit(pacing_.seed, std::uint64_t(t), 1, pacing_.vt_stall_percent);
+    rtl_.cycle(in.ctrl.valid, in.ctrl.start, word_bits<W>(in.word), vt_ready);
+    t_ = t;
+    if (rtl_.in_ready()) {
+      if (in.ctrl.valid && next_ < stream_.size()) ++next_;
+      holding_ = false;
+    } else {
+      holding_ = in.ctrl.valid;
+    }
+    if (rtl_.col_done() && ++col_done_ == columns_ + 1) end_ = t;
+    return in;
+  }
+  std::int64_t cycles() const { return t_; }
+  std::int64_t end() const { return end_; }  // the frame's last cycle, 0 while it runs
+
+ private:
+  IpRtl& rtl_;
+  const std::vector<invparam::StreamCode<W>>& stream_;
+  int columns_;
+  invparam::ArrayPacing pacing_;
+  std::size_t next_ = 0;
+  bool holding_ = false;
+  std::int64_t t_ = 0, end_ = 0;
+  int col_done_ = 0;
+};
+
+// The model's observer: steps the RTL through each cycle the model runs and compares.
+template <int W>
+class IpLockstep {
+ public:
+  IpLockstep(IpRtl& rtl, IpHost<W>& host, const std::vector<hls::PpState<W>>& chain, IpChecker& check, IpFrameResult& r)
+      : rtl_(rtl), host_(host), chain_(chain), check_(check), r_(r), n_(int(chain.size())) {}
+
+  // A held cycle: the RTL must hold too, with a result on VT; every PP shows its registers.
+  void on_freeze(std::int64_t t) {
+    const invparam::ArrayInput<W> in = host_.step(t);
+    ++r_.held_cycles;
+    check_.expect(t, -1, "in_ready_o (held cycle)", 0, rtl_.in_ready());
+    check_.expect(t, -1, "vt_valid_o (held cycle)", 1, rtl_.vt_valid());
+    hls::PpCtrl ctrl = in.ctrl;
+    for (int k = 0; k < n_; ++k) {
+      const hls::PpState<W>& st = chain_[std::size_t(k)];
+      compare_pp(t, k, st.RGres, hls::PpCtrl{st.Tctrl, st.Tvalid});
+      compare_vt(t, k, hls::pp_drives_vt(st, ctrl), st.RGpar, st.RGobj);
+      ctrl = hls::PpCtrl{st.Tctrl, st.Tvalid};
+    }
+    check_.expect(t, -1, "col_done_o (held cycle)", 0, rtl_.col_done());
+  }
+
+  // An advancing cycle, PP k (0 first): its outputs before the edge; after PP N_n - 1 the chain's
+  // new state tells whether the last PP did clock 4 of a T_Col (col_done_o).
+  void on_clock(std::int64_t t, int k, const hls::PpOutputs<W>& o) {
+    if (k == 0) {
+      tail_input_valid_ = host_.step(t).ctrl.valid;
+      check_.expect(t, -1, "in_ready_o", 1, rtl_.in_ready());
+      if (rtl_.vt_valid()) check_.expect(t, -1, "vt_pp_o < N_PP", 1, rtl_.vt_pp() < n_ ? 1 : 0);
+    }
+    compare_pp(t, k, o.output, o.ctrl);
+    compare_vt(t, k, o.vt.valid, o.vt.par, o.vt.obj);
+    r_.vt_results += o.vt.valid ? 1 : 0;
+    r_.vt_hits += o.vt.valid && hls::word_nonzero(o.vt.obj) ? 1 : 0;
+    if (k == n_ - 2) tail_input_valid_ = o.ctrl.valid;  // PP k's Output is the last PP's Input
+    if (k == n_ - 1) {                                  // a bubble at the last PP is no clock of its token
+      const hls::PpState<W>& tail = chain_.back();
+      const bool done = tail_input_valid_ && tail.clock.value() == 4 && hls::command_kind(tail.RGI) == hls::kKindCol;
+      check_.expect(t, -1, "col_done_o", done, rtl_.col_done());
+    }
+  }
+
+ private:
+  void compare_pp(std::int64_t t, int k, const hls::Word<W>& word, const hls::PpCtrl& ctrl) {
+    check_.expect(t, k, "pp_word_o (RGres)", word_bits<W>(word), rtl_.pp_word(k));
+    check_.expect(t, k, "pp_start_o (Tctrl)", ctrl.start, rtl_.pp_start(k));
+    check_.expect(t, k, "pp_valid_o (Tvalid)", ctrl.valid, rtl_.pp_valid(k));
+  }
+  void compare_vt(std::int64_t t, int k, bool drives, const hls::ParCode& par, const hls::Word<W>& obj) {
+    const bool rtl_drives = rtl_.vt_valid() && rtl_.vt_pp() == k;
+    check_.expect(t, k, "VT driven by this PP (vt_valid_o && vt_pp_o == k)", drives, rtl_drives);
+    if (!drives || !rtl_drives) return;
+    check_.expect(t, k, "vt_par_o (RGpar)", par.value(), rtl_.vt_par());
+    check_.expect(t, k, "vt_obj_o (RGobj)", word_bits<W>(obj), rtl_.vt_obj());
+  }
+
+  IpRtl& rtl_;
+  IpHost<W>& host_;
+  const std::vector<hls::PpState<W>>& chain_;
+  IpChecker& check_;
+  IpFrameResult& r_;
+  int n_;
+  bool tail_input_valid_ = false;  // this cycle's Ctrl valid line into the last PP
+};
+
+}  // namespace detail
+
+// The co-simulation of one configuration: the RTL and the model's chain, frames back to back.
+template <int W>
+class IpCosim {
+ public:
+  IpCosim(IpRtl& rtl, const hls::Word<W>& eps) : rtl_(rtl), chain_(std::size_t(rtl.n_pp())) {
+    if (rtl.w() != W)
+      throw std::logic_error("ip cosim: a W=" + std::to_string(W) + " harness on a W=" + std::to_string(rtl.w()) +
+                             " model");
+    reset(eps);
+  }
+  // Power-on of both sides: every register 0 (RGtin = MAX), RGeps = eps.
+  void reset(const hls::Word<W>& eps) {
+    rtl_.reset(word_bits<W>(eps));
+    for (hls::PpState<W>& st : chain_) hls::pp_reset(st, eps);
+  }
+  int n_pp() const { return int(chain_.size()); }
+
+  // One frame's stream (columns columns) through both, from where the last frame left them.
+  IpFrameResult run_frame(const std::vector<invparam::StreamCode<W>>& stream, int columns,
+                          const invparam::ArrayPacing& pacing = {}) {
+    IpFrameResult r;
+    const int frame = frames_++;
+    r.samples = std::int64_t(columns) * n_pp();
+    r.codes = std::int64_t(stream.size());
+    r.tokens = stream_tokens(stream);
+    const auto t0 = std::chrono::steady_clock::now();
+    detail::IpChecker check(r, frame);
+    detail::IpHost<W> host(rtl_, stream, columns, pacing);
+    detail::IpLockstep<W> lockstep(rtl_, host, chain_, check, r);
+    try {
+      run_ = invparam::run_array_frame(chain_, stream, columns, pacing, lockstep);
+      r.model_cycles = run_.clocks;
+    } catch (const std::logic_error& e) {  // the model did not drain: a broken stream
+      check.expect(host.cycles(), -1, e.what(), 0, 1);
+    }
+    // The RTL's side up to its own frame end (if the model's came first).
+    const std::int64_t limit = 8 * (r.codes + 4 * std::int64_t(n_pp()) + 16);
+    while (host.end() == 0 && host.cycles() < limit) {
+      host.step(host.cycles() + 1);
+      check.expect(host.cycles(), -1, "col_done_o: the frame goes on after the model's end", 0, 1);
+    }
+    r.rtl_cycles = host.end();
+    check.expect(host.cycles(), -1, "frame cycles (the (columns + 1)-th col_done_o)", std::uint64_t(r.model_cycles),
+                 std::uint64_t(r.rtl_cycles));
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  }
+  // The model's run of the last frame (its VT results per column and PP).
+  const invparam::ArrayRun<W>& last_run() const { return run_; }
+
+ private:
+  IpRtl& rtl_;
+  std::vector<hls::PpState<W>> chain_;
+  invparam::ArrayRun<W> run_;
+  int frames_ = 0;
+};
+
+// The RTL alone on a stream (bench_rtl): its frame's cycles.
+template <int W>
+std::int64_t ip_rtl_run_frame(IpRtl& rtl, const std::vector<invparam::StreamCode<W>>& stream, int columns,
+                              const invparam::ArrayPacing& pacing = {}) {
+  detail::IpHost<W> host(rtl, stream, columns, pacing);
+  const std::int64_t limit = 8 * (std::int64_t(stream.size()) + 4 * std::int64_t(rtl.n_pp()) + 16);
+  while (host.end() == 0 && host.cycles() < limit) host.step(host.cycles() + 1);
+  return host.end();
+}
+
+// ---- Frames of a scene (ip_cosim.cpp) ---------------------------------------------------------
+
+// The array's scene of a frame's setup: every polyhedron an object, full streaming, the
+// background code 0xffffff (no face: face codes are indices in the setup's face list).
+template <int W>
+invparam::InvparamScene<W> invparam_scene_of(const InvparamSetup<W>& setup) {
+  invparam::InvparamScene<W> s;
+  s.eps = setup.eps;
+  s.background = hls::ParCode(0xffffff);
+  int first = 0;
+  for (int o = 0; o < setup.faces->objects; ++o) {
+    invparam::ObjectSpan span;
+    span.first_face = first;
+    span.face_count = setup.faces->object_faces[o];
+    first += span.face_count;
+    s.objects.push_back(span);
+  }
+  for (int f = 0; f < first; ++f) s.faces.push_back(setup.faces->face[f]);
+  return s;
+}
+
+// Frames (ScreenFrame, stage B's polyhedra) through one configuration, back to back: each set up on
+// an N_PP x N_PP lattice (L = N_PP: a PP per sample of a column, N_PP columns). W from the model.
+class IpFrameCosim {
+ public:
+  virtual ~IpFrameCosim() = default;
+  virtual IpFrameResult run(const ScreenFrame& frame, const invparam::ArrayPacing& pacing) = 0;
+};
+std::unique_ptr<IpFrameCosim> make_ip_frame_cosim(IpRtl& rtl);
+
+}  // namespace cig::cosim

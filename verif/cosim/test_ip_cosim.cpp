@@ -1,0 +1,293 @@
+// Co-simulation of the inverse-parameter array RTL (rtl/ip_array.sv) against the clock-level model
+// (ip_cosim.hpp): zero mismatches of any PP's output word, Ctrl lines and VT result, of the
+// handshake (held cycles) and of the frame's cycles, in every Verilated configuration (W, N_PP) =
+// (64, 8), (64, 64), (57, 16), on single objects (a box, a prism, faces grazed by a sample, an empty
+// frame, the eye inside an object), random scenes of random words and boxes, the polyhedra scene's
+// frames set up on an N_PP x N_PP lattice, frames back to back without reset, and random input gaps
+// and VT back-pressure. Each failure prints the first mismatch (frame, cycle, PP, signal, expected,
+// got). CIG_COSIM_TRACE_DIR=DIR writes every run's FST waveform to DIR.
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ip_cosim.hpp"
+#include "pipeline/scene_pipeline.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/invparam_scenes.hpp"
+
+namespace cig::cosim {
+namespace {
+
+using invparam::ArrayPacing;
+using invparam::InvparamScene;
+using invparam::StreamMode;
+using invparam::scenes::uniform;
+
+std::unique_ptr<IpRtl> rtl_for(const IpRtlConfig& cfg) {
+  auto rtl = make_ip_rtl(cfg.w, cfg.n_pp);
+  if (!rtl) return rtl;
+  static int run = 0;
+  const char* dir = std::getenv("CIG_COSIM_TRACE_DIR");
+  if (dir && *dir) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    rtl->trace_to(std::string(dir) + "/" + info->name() + "_" + std::to_string(run++) + ".fst");
+  }
+  return rtl;
+}
+
+void expect_ok(const IpFrameResult& r, const std::string& what) {
+  EXPECT_TRUE(r.ok()) << what << ": " << r.mismatches << " mismatches of " << r.checks << " checks; cycles model "
+                      << r.model_cycles << " RTL " << r.rtl_cycles << "\nfirst: " << r.first;
+  EXPECT_GT(r.checks, 0) << what;
+  EXPECT_EQ(r.vt_results, r.samples) << what << ": one VT result per sample";
+}
+
+// Scenes through one configuration: a fresh reset per scene (its own RGeps). The samples that saw
+// an object, and the held cycles, summed over the scenes, must not be 0: the test tests something.
+template <int W>
+void expect_scenes(const IpRtlConfig& cfg, const std::vector<InvparamScene<W>>& scenes, int columns,
+                   const ArrayPacing& pacing = {}, StreamMode mode = StreamMode::kFull) {
+  auto rtl = rtl_for(cfg);
+  ASSERT_TRUE(rtl != nullptr) << cfg.text();
+  std::int64_t hits = 0, held = 0;
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    IpCosim<W> cosim(*rtl, scenes[k].eps);
+    const IpFrameResult r =
+        cosim.run_frame(invparam::build_frame_stream(scenes[k], columns, cfg.n_pp, mode), columns, pacing);
+    expect_ok(r, cfg.text() + ", scene " + std::to_string(k));
+    hits += r.vt_hits;
+    held += r.held_cycles;
+  }
+  EXPECT_GT(hits, 0) << cfg.text();
+  if (pacing.vt_stall_percent > 0) EXPECT_GT(held, 0) << cfg.text();
+}
+
+// The same for every configuration, the scenes made per configuration (its W and N_PP).
+template <class MakeScenes>
+void for_each_config(MakeScenes make, const ArrayPacing& pacing = {}) {
+  for (const IpRtlConfig& cfg : ip_rtl_configs()) {
+    SCOPED_TRACE(cfg.text());
+    if (cfg.w == 64) {
+      int columns = 0;
+      const std::vector<InvparamScene<64>> s = make(std::integral_constant<int, 64>{}, cfg.n_pp, columns);
+      expect_scenes<64>(cfg, s, columns, pacing);
+    } else if (cfg.w == 57) {
+      int columns = 0;
+      const std::vector<InvparamScene<57>> s = make(std::integral_constant<int, 57>{}, cfg.n_pp, columns);
+      expect_scenes<57>(cfg, s, columns, pacing);
+    } else {
+      ADD_FAILURE() << "no harness for " << cfg.text();
+    }
+  }
+}
+
+// ---- Geometric objects (eye space, outward normals; set up on an L x L lattice, L = N_PP) --------
+
+EyeFace plane(double nx, double ny, double nz, double d) {
+  EyeFace f;
+  f.nx = nx;
+  f.ny = ny;
+  f.nz = nz;
+  f.d = d;
+  return f;
+}
+
+EyePolyhedron box_polyhedron(double cx, double cy, double cz, double hx, double hy, double hz) {
+  EyePolyhedron p;
+  p.faces = {plane(1, 0, 0, cx + hx),     plane(-1, 0, 0, -(cx - hx)), plane(0, 1, 0, cy + hy),
+             plane(0, -1, 0, -(cy - hy)), plane(0, 0, 1, cz + hz),     plane(0, 0, -1, -(cz - hz))};
+  return p;
+}
+
+// A triangular prism along z (z0..z1), its cross-section turned by `turn` radians.
+EyePolyhedron prism_polyhedron(double cx, double cy, double r, double z0, double z1, double turn) {
+  EyePolyhedron p;
+  for (int k = 0; k < 3; ++k) {
+    const double a = turn + k * 2.0943951023931953;
+    const double nx = std::cos(a), ny = std::sin(a);
+    p.faces.push_back(plane(nx, ny, 0, nx * cx + ny * cy + r));
+  }
+  p.faces.push_back(plane(0, 0, 1, z1));
+  p.faces.push_back(plane(0, 0, -1, -z0));
+  return p;
+}
+
+template <int W>
+InvparamScene<W> geometric_scene(const std::vector<EyePolyhedron>& polyhedra, int n_pp) {
+  ScreenFrame f;
+  f.raster = n_pp;
+  f.tan_half_fov = 0.8;
+  f.polyhedra = polyhedra;
+  return invparam_scene_of(invparam_setup<W>(f, InvparamLattice{n_pp, 0}));
+}
+
+// Word-level faces grazed by samples: tau exactly 0 on a column (an entry face) and on a row (an
+// exit face), an az = 0 face whose Den is exactly RGeps on one row and RGeps + 1 on the next, two
+// entry faces at the same tau (the later one's colour), and a second object with the same tau_in
+// (the first object keeps the sample: RGtin > RGobj is strict).
+template <int W>
+InvparamScene<W> grazing_scene() {
+  InvparamScene<W> s;
+  s.background = hls::ParCode(0x55aa55);
+  s.eps = hls::Word<W>(-40);
+  auto face = [&](bool az, bool as, std::int64_t start, std::int64_t sx, std::int64_t sy, unsigned c) {
+    hls::FaceSetup<W> f;
+    f.az = az;
+    f.as = as;
+    f.start = hls::Word<W>(start);
+    f.step_x = hls::Word<W>(sx);
+    f.step_y = hls::Word<W>(sy);
+    f.colour = hls::ParCode(c);
+    s.faces.push_back(f);
+  };
+  invparam::ObjectSpan a;
+  a.first_face = 0;
+  face(true, false, -3000, 1000, 0, 0x101);  // tau = 1000 (i - 3): 0 at column 3
+  face(true, false, -3000, 1000, 0, 0x102);  // the same plane again: the later entry face's colour
+  face(true, true, -4000, 0, 500, 0x103);    // exit, tau = 500 (j + 1) - 4000: 0 at row 7
+  face(false, false, -40 - 6, 0, 1, 0x104);  // Den = eps + j - 5: = eps at row 5, eps + 1 at row 6
+  a.face_count = 4;
+  s.objects.push_back(a);
+  invparam::ObjectSpan b;
+  b.first_face = 4;
+  face(true, false, -3000, 1000, 0, 0x201);  // the same tau_in as object a: a keeps it
+  b.face_count = 1;
+  s.objects.push_back(b);
+  return s;
+}
+
+TEST(IpCosim, ConfigurationsHaveTheirParameters) {
+  for (const IpRtlConfig& cfg : ip_rtl_configs()) {
+    auto rtl = make_ip_rtl(cfg.w, cfg.n_pp);
+    ASSERT_TRUE(rtl != nullptr) << cfg.text();
+    EXPECT_EQ(rtl->w(), cfg.w);
+    EXPECT_EQ(rtl->n_pp(), cfg.n_pp);
+  }
+  EXPECT_EQ(make_ip_rtl(64, 9), nullptr);
+}
+
+TEST(IpCosim, SingleObjects) {
+  for_each_config([](auto w, int n_pp, int& columns) {
+    constexpr int W = decltype(w)::value;
+    columns = n_pp;
+    std::vector<InvparamScene<W>> s;
+    s.push_back(geometric_scene<W>({box_polyhedron(0.3, -0.2, 10, 3, 2, 1.5)}, n_pp));      // a box
+    s.push_back(geometric_scene<W>({prism_polyhedron(-0.5, 0.7, 2.5, 6, 14, 0.3)}, n_pp));  // a prism
+    s.push_back(geometric_scene<W>({}, n_pp));                                              // empty
+    s.push_back(geometric_scene<W>({box_polyhedron(0, 0, 0, 5, 5, 5), box_polyhedron(1, 1, 20, 4, 4, 2)},
+                                   n_pp));  // the eye inside an object, another behind it
+    EyePolyhedron cut = box_polyhedron(0, 0, 8, 4, 3, 1);
+    cut.faces.push_back(plane(1, 0, 0, 0));  // x <= 0: a plane through the eye (Num = 0, az = 0)
+    s.push_back(geometric_scene<W>({cut}, n_pp));
+    InvparamScene<W> box;  // the unit tests' word-level box
+    box.background = hls::ParCode(0xabcdef);
+    box.eps = hls::Word<W>(-16);
+    invparam::scenes::add_box(box, 1, columns - 2, 1, n_pp - 2, 1 << 20, 100);
+    s.push_back(box);
+    s.push_back(grazing_scene<W>());
+    return s;
+  });
+}
+
+TEST(IpCosim, RandomScenes) {
+  for_each_config([](auto w, int n_pp, int& columns) {
+    constexpr int W = decltype(w)::value;
+    std::mt19937_64 rng(std::uint64_t(100 + W + n_pp));
+    columns = 6;
+    std::vector<InvparamScene<W>> s;
+    for (int k = 0; k < 12; ++k) {
+      const int range = std::vector<int>{6, 20, W - 4}[std::size_t(k % 3)];
+      s.push_back(invparam::scenes::random_scene<W>(rng, int(uniform(rng, 0, 6)), 7, range));
+    }
+    for (int k = 0; k < 4; ++k) s.push_back(invparam::scenes::box_scene<W>(rng, int(uniform(rng, 1, 5)), 6, n_pp));
+    return s;
+  });
+}
+
+// Covered-columns streaming: column chains of different lengths (and their padding).
+TEST(IpCosim, CoveredColumnsStream) {
+  std::mt19937_64 rng(7);
+  std::vector<InvparamScene<64>> s;
+  for (int k = 0; k < 6; ++k) s.push_back(invparam::scenes::box_scene<64>(rng, int(uniform(rng, 1, 6)), 10, 8));
+  expect_scenes<64>(IpRtlConfig{64, 8}, s, 10, {}, StreamMode::kCoveredColumns);
+  expect_scenes<64>(IpRtlConfig{64, 8}, s, 10, ArrayPacing{5, 30, 30}, StreamMode::kCoveredColumns);
+}
+
+TEST(IpCosim, RandomGapsAndBackPressure) {
+  for (std::uint32_t seed : {11u, 12u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    for_each_config(
+        [](auto w, int n_pp, int& columns) {
+          constexpr int W = decltype(w)::value;
+          std::mt19937_64 rng(std::uint64_t(200 + W + n_pp));
+          columns = 5;
+          std::vector<InvparamScene<W>> s;
+          for (int k = 0; k < 6; ++k)
+            s.push_back(invparam::scenes::random_scene<W>(rng, int(uniform(rng, 0, 5)), 7, 20));
+          s.push_back(invparam::scenes::box_scene<W>(rng, 3, 5, n_pp));
+          return s;
+        },
+        ArrayPacing{seed, 35, 40});
+  }
+}
+
+// Frames back to back through one chain and one RTL, no reset between them (the same RGeps):
+// random scenes, empty ones, paced and not.
+template <int W>
+void expect_consecutive(const IpRtlConfig& cfg, std::uint64_t seed) {
+  auto rtl = rtl_for(cfg);
+  ASSERT_TRUE(rtl != nullptr);
+  std::mt19937_64 rng(seed);
+  const hls::Word<W> eps(-100);
+  IpCosim<W> cosim(*rtl, eps);
+  const int columns = 4;
+  for (int frame = 0; frame < 10; ++frame) {
+    InvparamScene<W> s = invparam::scenes::random_scene<W>(rng, frame % 4 == 1 ? 0 : int(uniform(rng, 1, 5)), 7, 20);
+    s.eps = eps;
+    const ArrayPacing pacing{std::uint32_t(frame + 3), frame % 2 ? 30 : 0, frame % 3 ? 35 : 0};
+    const IpFrameResult r =
+        cosim.run_frame(invparam::build_frame_stream(s, columns, cfg.n_pp, StreamMode::kFull), columns, pacing);
+    expect_ok(r, cfg.text() + ", frame " + std::to_string(frame));
+  }
+}
+
+TEST(IpCosim, ConsecutiveFramesWithoutReset) {
+  expect_consecutive<64>(IpRtlConfig{64, 8}, 31);
+  expect_consecutive<57>(IpRtlConfig{57, 16}, 32);
+  expect_consecutive<64>(IpRtlConfig{64, 64}, 33);
+}
+
+// scenes/polyhedra.json through stage B, each frame set up on a 64 x 64 lattice (W = 64,
+// N_PP = 64): frames 0 and 3, every channel, back to back through one RTL; frame 0's centre
+// channel once more with input gaps and VT back-pressure.
+TEST(IpCosim, PolyhedraFrames) {
+  const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/polyhedra.json");
+  ScenePipeline pipeline(scene);
+  auto rtl = rtl_for(IpRtlConfig{64, 64});
+  ASSERT_TRUE(rtl != nullptr);
+  const std::unique_ptr<IpFrameCosim> cosim = make_ip_frame_cosim(*rtl);
+  std::int64_t faces = 0;
+  for (int frame : {0, 3})
+    for (int channel = 0; channel < int(scene.channels.size()); ++channel) {
+      nlohmann::ordered_json rep;
+      const ScreenFrame f = pipeline.geometry(frame, channel, rep);
+      const IpFrameResult r = cosim->run(f, {});
+      expect_ok(r, "polyhedra frame " + std::to_string(frame) + " channel " + std::to_string(channel));
+      EXPECT_EQ(r.samples, 64 * 64);
+      EXPECT_GT(r.vt_hits, 64) << "frame " << frame << " channel " << channel;
+      faces += r.faces;
+    }
+  EXPECT_GT(faces, 20);  // the frames do have polyhedra
+  nlohmann::ordered_json rep;
+  const IpFrameResult r = cosim->run(pipeline.geometry(0, 1, rep), ArrayPacing{17, 30, 30});
+  expect_ok(r, "polyhedra frame 0 channel 1, paced");
+  EXPECT_GT(r.held_cycles, 0);
+}
+
+}  // namespace
+}  // namespace cig::cosim
