@@ -396,6 +396,7 @@ TEST(Cosim, FrameStartCutsAnUnfinishedFrame) {
     const ScreenFrame a = random_frame(64, 60, 0.5, r), b = random_frame(64, 40, 0.5, r);
     const StallConfig stalls{25, 30, 35};
     for (const int hold : {0, 40}) {
+      SCOPED_TRACE("cut and held " + std::to_string(hold) + " cycles");
       expect_cut_frame(a, *rtl, cfg, stalls, 0.5, hold);
       const CosimResult next = cosim_frame(b, *rtl, cfg, hold == 0 ? StallConfig{} : stalls);
       EXPECT_TRUE(next.comparison.ok()) << "the frame after the cut: " << next.comparison.mismatches
