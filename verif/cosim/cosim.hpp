@@ -70,7 +70,8 @@ struct Trace {
   std::vector<std::vector<Event>> pixel;  // per pixel processor
   std::vector<MaskSetEvent> mask_sets;    // sorted
   Image image;
-  double seconds = 0;  // wall time of the run (simulation speed)
+  double seconds = 0;        // wall time of the run (simulation speed)
+  bool busy_at_cut = false;  // RtlRunner::run_cut: the design still held work when it stopped
 };
 
 // The model's side: the architecture model with a tracer that records what the RTL must show.
@@ -146,6 +147,13 @@ class RtlRunner {
   // covers), frame start, the stream with the stalls, the read-out of every pixel.
   virtual Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
                     const StallConfig& stalls, long long max_cycles) = 0;
+  // A frame cut short (a frame overrun, rtl/README.md "Frame"): configuration, frame start, the
+  // stream with the stalls for `cycles` cycles, then `hold` more cycles with no input and every
+  // pixel processor stalled (the records back up: FIFOs fill, PEs stall), and it returns without
+  // draining the frame or reading it out; the next run's frame start must clear what is left.
+  // The trace holds the events of the first `cycles` cycles, no image.
+  virtual Trace run_cut(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
+                        const StallConfig& stalls, long long cycles, int hold) = 0;
   // FST waveform of the following runs (this build must have tracing on).
   virtual void trace_to(const std::string& fst_file) = 0;
 };

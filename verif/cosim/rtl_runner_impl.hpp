@@ -72,6 +72,27 @@ class RtlRunnerImpl final : public RtlRunner {
 
   Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
             const StallConfig& stalls, long long max_cycles) override {
+    Trace t = frame(roots, pixels, stalls, max_cycles, -1);
+    read_out(t);
+    return t;
+  }
+
+  Trace run_cut(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
+                const StallConfig& stalls, long long cycles, int hold) override {
+    Trace t = frame(roots, pixels, stalls, cycles + 1, cycles);
+    // The input idle and every pixel processor stalled: the records back up until the frame start.
+    top_->poly_valid_i = 0;
+    top_->pixel_stall_i = port_value_t<decltype(top_->pixel_stall_i)>(~std::uint64_t(0) >> (64 - npix_));
+    for (int k = 0; k < hold; ++k) edge();
+    t.busy_at_cut = top_->busy_o;
+    return t;
+  }
+
+ private:
+  // One frame from the frame start: until it is done (cut < 0; more than max_cycles throws), or
+  // until cycle `cut` starts (its stimulus not applied: the trace ends with cycle cut - 1).
+  Trace frame(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
+              const StallConfig& stalls, long long max_cycles, long long cut) {
     configure(pixels);
     top_->start_window_i = stalls.start_window ? 1 : 0;  // registered by the wrapper with the frame start
     // Frame start: latched by the wrapper at this edge, applied by the design at the next one,
@@ -90,6 +111,10 @@ class RtlRunnerImpl final : public RtlRunner {
     for (std::size_t k = 0; k < roots.size(); ++k) set_port_bits(packed[k], pack_record(L_, roots[k], 0), L_.win_w);
     std::size_t next = 0;
     for (long long cycle = 0;; ++cycle) {
+      if (cycle == cut) {
+        t.cycles = cycle;
+        break;
+      }
       if (cycle >= max_cycles)
         throw std::runtime_error("cosim: the RTL did not finish the frame within " + std::to_string(max_cycles) +
                                  " cycles");
@@ -139,7 +164,11 @@ class RtlRunnerImpl final : public RtlRunner {
     t.seconds = seconds_since(t0);
     top_->poly_valid_i = 0;
     std::sort(t.mask_sets.begin(), t.mask_sets.end());
-    // Read-out.
+    return t;
+  }
+
+  // The read-out of every pixel (the port is combinational: no clock).
+  void read_out(Trace& t) {
     const int size = 1 << n_;
     t.image = Image(size, size);
     for (int y = 0; y < size; ++y)
@@ -153,10 +182,8 @@ class RtlRunnerImpl final : public RtlRunner {
         dst[1] = std::uint8_t((rgb >> 8) & 255);
         dst[2] = std::uint8_t((rgb >> 16) & 255);
       }
-    return t;
   }
 
- private:
   // Clock edges. Every stimulus input goes through a register of the wrapper, so only the
   // rising edge evaluates the design; the falling edge's eval is cheap (the read-out address is
   // the only input logic left).

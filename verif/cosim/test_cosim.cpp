@@ -270,6 +270,161 @@ TEST(Cosim, EmptyFrameTakesTheFrameStartCycleOnBothSides) {
     }
 }
 
+// Frames through ONE Verilated instance, reset once when it is made and never again: each frame
+// is the configuration writes, the frame start (frame_start_i) and the stream (RtlRunner::run).
+// The model's side of every frame is an independent frame (cosim_stream: a new ArchModel, a
+// cleared mask memory, the pixel states begun), because the frame start must clear every state
+// (rtl/README.md "Frame"): frame k of the RTL must equal it whatever frames 0..k-1 left behind.
+// The order makes every frame-start clear matter (rtl/README.md "Frame-start clears"):
+//   1. a full-screen opaque polygon owns every pixel and fills every mask word (and leaves the
+//      input FIFO's pointers at 1: one root);
+//   2. random polygons: masks that survived would drop them, pixel states that survived would
+//      own every sample already, stale FIFO pointers would replay the full-screen root;
+//   3. an empty frame: its image is the background, so pixel states that survived show;
+//   4, 5. the same random frame twice: every pixel of the second was touched by the first, so
+//      sums or owned masks that survived change its records and its image.
+// Frame 0 (random polygons and light points) also checks that the runner clears the light index
+// of the pixels it lit (the tables are not frame state: the host rewrites them).
+struct FrameStep {
+  std::string name;
+  ScreenFrame frame;
+  StallConfig stalls;
+};
+
+ScreenFrame random_frame(int raster, int polygons, double max_size, Rng& r) {
+  ScreenFrame f = empty_frame(raster);
+  for (int k = 0; k < polygons; ++k) f.polygons.push_back(random_polygon(r, uniform(r, 0.02, max_size), 10 + k));
+  return f;
+}
+
+std::vector<FrameStep> frame_sequence(int raster, int polygons, double max_size, std::uint32_t seed) {
+  Rng r(seed);
+  const StallConfig none{}, stalls{seed, 30, 35};
+  ScreenFrame lit = random_frame(raster, polygons, max_size, r);
+  for (int k = 0; k < 12; ++k) {
+    ScreenLightPoint l;
+    l.xs = uniform(r, -0.9, 0.9);
+    l.ys = uniform(r, -0.9, 0.9);
+    l.zs = uniform(r, 5, 60);
+    l.ds = uniform(r, 0.0005, 0.0035);
+    l.colour = {1.0, uniform(r, 0.5, 1), uniform(r, 0.2, 0.9)};
+    l.priority = std::int32_t(r() % std::uint64_t(polygons + 1));
+    lit.light_points.push_back(l);
+  }
+  ScreenFrame full = empty_frame(raster);
+  full.polygons.push_back(polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, 20, r, true));
+  const ScreenFrame after_full = random_frame(raster, polygons, max_size, r);
+  const ScreenFrame again = random_frame(raster, polygons, max_size, r);
+  return {{"random polygons and light points", lit, none},
+          {"full-screen opaque polygon", full, none},
+          {"random polygons after the full screen", after_full, stalls},
+          {"empty", empty_frame(raster), stalls},
+          {"random polygons after the empty frame", again, none},
+          {"the same frame again, with stalls", again, stalls}};
+}
+
+void expect_frames_equal(const std::vector<FrameStep>& seq, int raster_log2, int tree_levels) {
+  SCOPED_TRACE("frames without reset, raster " + std::to_string(1 << raster_log2) + ", tree levels " +
+               std::to_string(tree_levels));
+  auto rtl = make_rtl_runner(raster_log2, tree_levels);  // the one instance: reset here only
+  ASSERT_TRUE(rtl != nullptr);
+  trace_on_demand(*rtl);
+  const RtlConfig cfg{raster_log2, tree_levels};
+  const long long pixels = 1LL << (2 * raster_log2);
+  std::vector<Image> images;
+  for (std::size_t k = 0; k < seq.size(); ++k) {
+    SCOPED_TRACE("frame " + std::to_string(k) + " (" + seq[k].name + ")");
+    const CosimResult r = cosim_frame(seq[k].frame, *rtl, cfg, seq[k].stalls);
+    EXPECT_TRUE(r.comparison.ok()) << r.comparison.mismatches << " mismatches of " << r.comparison.records_compared
+                                   << " records; cycles model " << r.model.cycles << " RTL " << r.rtl.cycles
+                                   << "\nfirst: " << r.comparison.first;
+    EXPECT_EQ(r.model.cycles, r.rtl.cycles);
+    images.push_back(r.rtl.image);
+    // The sequence's premises (else a clear would stop mattering without a failure here).
+    if (seq[k].frame.polygons.empty()) {
+      EXPECT_EQ(r.model.cycles, 1);
+    } else if (seq[k].frame.polygons.size() == 1) {
+      EXPECT_EQ(r.stats.pixels_full, pixels) << "the full-screen frame owns every pixel";
+    } else {
+      EXPECT_GT(r.stats.pixels_full, 0) << "a random frame draws and fills pixels";
+    }
+  }
+  ASSERT_EQ(images.size(), std::size_t(6));
+  EXPECT_EQ(images[4].rgb, images[5].rgb) << "the same frame twice";
+}
+
+TEST(Cosim, FramesWithoutReset) {
+  for (int t = 1; t <= 2; ++t) expect_frames_equal(frame_sequence(64, 40, 0.5, 21), 6, t);
+}
+
+TEST(Cosim, FramesWithoutResetN512Pipeline) { expect_frames_equal(frame_sequence(512, 24, 0.12, 22), 9, 1); }
+
+TEST(Cosim, FramesWithoutResetN512Tree) { expect_frames_equal(frame_sequence(512, 24, 0.12, 23), 9, 2); }
+
+// The model's trace of the cycles before `cut` (what RtlRunner::run_cut shows), no image.
+Trace before_cycle(const Trace& t, long long cut) {
+  const auto keep = [cut](const std::vector<Event>& in) {
+    std::vector<Event> out;
+    for (const Event& e : in)
+      if (e.cycle < cut) out.push_back(e);
+    return out;
+  };
+  Trace out;
+  out.cycles = cut;
+  for (const auto& s : t.pe) out.pe.push_back(keep(s));
+  for (const auto& s : t.pixel) out.pixel.push_back(keep(s));
+  for (const MaskSetEvent& m : t.mask_sets)
+    if (m.cycle < cut) out.mask_sets.push_back(m);
+  return out;
+}
+
+// Runs `f` on the RTL for `fraction` of the model's cycles, then `hold` cycles backed up
+// (RtlRunner::run_cut), and compares those cycles with the model's.
+void expect_cut_frame(const ScreenFrame& f, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
+                      double fraction, int hold) {
+  SCOPED_TRACE("frame cut at " + std::to_string(fraction) + " of its cycles, held " + std::to_string(hold));
+  quad::FrontEndStats fe;
+  const auto roots = quad::front_end<RtlArith>(f, cfg.raster_log2, fe);
+  quad::PixelFrame<RtlArith> pixels;
+  pixels.begin(f, cfg.raster_log2);
+  const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
+  const Trace model = model_trace(arch, roots, pixels, stalls, 2);
+  const long long cut = (long long)(double(model.cycles) * fraction);
+  pixels.begin(f, cfg.raster_log2);
+  const Trace rtl_cut = rtl.run_cut(roots, pixels, stalls, cut, hold);
+  const Comparison c = compare_traces(rtl_layout(), before_cycle(model, cut), rtl_cut, false);
+  EXPECT_TRUE(c.ok()) << c.mismatches << " mismatches of " << c.records_compared << "\nfirst: " << c.first;
+  EXPECT_TRUE(rtl_cut.busy_at_cut) << "the frame was cut before it was done";
+}
+
+// A frame start that cuts a frame short (a frame overrun, rtl/README.md "Frame"): FIFOs still hold
+// records and PEs windows, which only the frame start's clears of the FIFO counts and the PEs'
+// busy and todo remove (a frame that ran to its end leaves them empty, so FramesWithoutReset cannot
+// see those clears). The cut frame's cycles match the model's; the frame after it must equal an
+// independent frame. Cut once mid-frame (FIFOs partly full) and once backed up (every FIFO full,
+// every PE stalled), one Verilated instance per configuration.
+TEST(Cosim, FrameStartCutsAnUnfinishedFrame) {
+  for (int t = 1; t <= 2; ++t) {
+    SCOPED_TRACE("tree levels " + std::to_string(t));
+    auto rtl = make_rtl_runner(6, t);
+    ASSERT_TRUE(rtl != nullptr);
+    trace_on_demand(*rtl);
+    const RtlConfig cfg{6, t};
+    Rng r(24);
+    const ScreenFrame a = random_frame(64, 60, 0.5, r), b = random_frame(64, 40, 0.5, r);
+    const StallConfig stalls{25, 30, 35};
+    for (const int hold : {0, 40}) {
+      SCOPED_TRACE("cut and held " + std::to_string(hold) + " cycles");
+      expect_cut_frame(a, *rtl, cfg, stalls, 0.5, hold);
+      const CosimResult next = cosim_frame(b, *rtl, cfg, hold == 0 ? StallConfig{} : stalls);
+      EXPECT_TRUE(next.comparison.ok()) << "the frame after the cut: " << next.comparison.mismatches
+                                        << " mismatches of " << next.comparison.records_compared << "; cycles model "
+                                        << next.model.cycles << " RTL " << next.rtl.cycles
+                                        << "\nfirst: " << next.comparison.first;
+    }
+  }
+}
+
 // The C++ field table (record_bits.hpp: widths from the hls/ types) against what every Verilated
 // configuration elaborated from rtl/qt_pkg.sv (its wrapper's public parameters), and the unit
 // counts against the architecture model's: an edit of one side alone fails here, by name.
