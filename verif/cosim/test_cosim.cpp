@@ -189,7 +189,9 @@ void expect_start_window(const ScreenFrame& f, int raster_log2, int tree_levels,
                                     << "\nfirst: " << r->comparison.first;
   EXPECT_EQ(on.rtl.image.rgb, off.rtl.image.rgb);
   EXPECT_EQ(on.model.image.rgb, off.model.image.rgb);
-  if (stalls.input_gap_percent == 0 && stalls.output_stall_percent == 0) EXPECT_LE(on.rtl.cycles, off.rtl.cycles);
+  if (stalls.input_gap_percent == 0 && stalls.output_stall_percent == 0) {
+    EXPECT_LE(on.rtl.cycles, off.rtl.cycles);
+  }
 }
 
 TEST(Cosim, StartWindow) {
