@@ -11,8 +11,8 @@ caught or not, by which test (the first failing GoogleTest), the first mismatch 
 went stale after an edit of the file).
 
 List line (tab-separated; # comments): id, file, original text, mutated text, category,
-configurations (6p, 4p2t, both space-separated; - for the model), what it breaks. Category
-`equivalent`: a mutant that cannot change what the co-simulation sees; the last column says why.
+configurations (6p, 4p2t; stage F: w64n8, w57n16, w64n64; space-separated; - for the model), what
+it breaks. Category `equivalent`: a mutant that cannot change what the co-simulation sees; the last column says why.
 """
 import argparse
 import fcntl
@@ -26,7 +26,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
-CONFIG_NAMES = {"6p": "6_1", "4p2t": "6_2"}
+# The list's configuration names: the quadtree's (N_LOG2 _ TREE_LEVELS) and stage F's (W _ N_PP).
+CONFIG_NAMES = {"6p": "6_1", "4p2t": "6_2", "w64n8": "64_8", "w57n16": "57_16", "w64n64": "64_64"}
 
 
 def read_tsv(path, columns):
@@ -69,7 +70,7 @@ def validate(mutants, groups):
             errors.append(f"{m['where']}: {m['id']}: the mutated text is the original")
         for c in m["configs"].split():
             if c != "-" and c not in CONFIG_NAMES:
-                errors.append(f"{m['where']}: {m['id']}: unknown configuration {c} (6p, 4p2t, -)")
+                errors.append(f"{m['where']}: {m['id']}: unknown configuration {c} ({', '.join(CONFIG_NAMES)}, -)")
     return errors
 
 
@@ -94,7 +95,8 @@ def apply(m, g, work):
         f.write(text.replace(m["original"], m["mutated"], 1))
     if m["configs"] != "-":
         configs = " ".join(CONFIG_NAMES[c] for c in m["configs"].split())
-        path = os.path.join(work, "configs")
+        # The group's configs file sits next to its copy's directory (rtl -> configs, ip/rtl -> ip/configs).
+        path = os.path.join(work, os.path.dirname(g["copy_to"]), "configs")
         if not os.path.exists(path) or open(path).read().strip() != configs:
             with open(path, "w") as f:
                 f.write(configs + "\n")
