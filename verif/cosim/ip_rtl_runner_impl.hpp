@@ -9,26 +9,23 @@
 #include <stdexcept>
 
 #include <verilated.h>
-#include <verilated_fst_c.h>
 
 #include "ip_cosim.hpp"
+#include "verilated_model.hpp"
 #include "verilator_ports.hpp"
 
 namespace cig::cosim::detail {
 
 // kTrace: the model was Verilated with --trace-fst (trace_to works).
 template <class Top, class Tb, bool kTrace = true>
-class IpRtlImpl final : public IpRtl {
+class IpRtlImpl final : public IpRtl, private VerilatedModel<Top, kTrace> {
+  using Model = VerilatedModel<Top, kTrace>;
+  using Model::fall;
+  using Model::rise;
+  using Model::top_;
+
  public:
-  IpRtlImpl() : ctx_(std::make_unique<VerilatedContext>()) {
-    ctx_->traceEverOn(kTrace);
-    top_ = std::make_unique<Top>(ctx_.get());
-    reset(0);
-  }
-  ~IpRtlImpl() override {
-    if (fst_) fst_->close();
-    top_->final();
-  }
+  IpRtlImpl() { reset(0); }
   int w() const override { return int(Tb::W); }
   int n_pp() const override { return int(Tb::N_PP); }
 
@@ -73,34 +70,7 @@ class IpRtlImpl final : public IpRtl {
   bool pp_start(int k) const override { return port_bit(top_->pp_start_o, k); }
   bool pp_valid(int k) const override { return port_bit(top_->pp_valid_o, k); }
 
-  void trace_to(const std::string& file) override {
-    if constexpr (kTrace) {
-      fst_ = std::make_unique<VerilatedFstC>();
-      top_->trace(fst_.get(), 99);
-      fst_->open(file.c_str());
-    } else {
-      throw std::runtime_error("cosim: this model was built without tracing (" + file + ")");
-    }
-  }
-
- private:
-  // Every stimulus input goes through a register of the wrapper, so only the rising edge
-  // evaluates the design.
-  void rise() {
-    top_->clk_i = 1;
-    top_->eval();
-    if (fst_) fst_->dump(time_++);
-  }
-  void fall() {
-    top_->clk_i = 0;
-    top_->eval();
-    if (fst_) fst_->dump(time_++);
-  }
-
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Top> top_;
-  std::unique_ptr<VerilatedFstC> fst_;
-  std::uint64_t time_ = 0;
+  void trace_to(const std::string& file) override { Model::open_trace(file); }
 };
 
 }  // namespace cig::cosim::detail

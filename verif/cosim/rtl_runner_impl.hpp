@@ -11,10 +11,10 @@
 #include <stdexcept>
 
 #include <verilated.h>
-#include <verilated_fst_c.h>
 
 #include "common/timing.hpp"
 #include "cosim.hpp"
+#include "verilated_model.hpp"
 #include "verilator_ports.hpp"
 
 namespace cig::cosim::detail {
@@ -29,17 +29,15 @@ RtlModelParams model_params() {
 
 // kTrace: the model was Verilated with --trace-fst (trace_to works).
 template <class Top, class Tb, bool kTrace = true>
-class RtlRunnerImpl final : public RtlRunner {
+class RtlRunnerImpl final : public RtlRunner, private VerilatedModel<Top, kTrace> {
+  using Model = VerilatedModel<Top, kTrace>;
+  using Model::fall;
+  using Model::rise;
+  using Model::top_;
+
  public:
   explicit RtlRunnerImpl(int raster_log2)
-      : ctx_(std::make_unique<VerilatedContext>()),
-        n_(raster_log2),
-        params_(model_params<Tb>()),
-        npe_(params_.npe),
-        npix_(params_.npix),
-        L_(rtl_layout()) {
-    ctx_->traceEverOn(kTrace);
-    top_ = std::make_unique<Top>(ctx_.get());
+      : n_(raster_log2), params_(model_params<Tb>()), npe_(params_.npe), npix_(params_.npix), L_(rtl_layout()) {
     top_->clk_i = 0;
     top_->rst_ni = 0;
     top_->frame_start_i = 0;
@@ -53,22 +51,10 @@ class RtlRunnerImpl final : public RtlRunner {
     top_->rst_ni = 1;
     edge();
   }
-  ~RtlRunnerImpl() override {
-    if (fst_) fst_->close();
-    top_->final();
-  }
 
   const RtlModelParams& params() const override { return params_; }
 
-  void trace_to(const std::string& file) override {
-    if constexpr (kTrace) {
-      fst_ = std::make_unique<VerilatedFstC>();
-      top_->trace(fst_.get(), 99);
-      fst_->open(file.c_str());
-    } else {
-      throw std::runtime_error("cosim: this model was built without tracing (" + file + ")");
-    }
-  }
+  void trace_to(const std::string& file) override { Model::open_trace(file); }
 
   Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
             const StallConfig& stalls, long long max_cycles) override {
@@ -184,19 +170,8 @@ class RtlRunnerImpl final : public RtlRunner {
       }
   }
 
-  // Clock edges. Every stimulus input goes through a register of the wrapper, so only the
-  // rising edge evaluates the design; the falling edge's eval is cheap (the read-out address is
-  // the only input logic left).
-  void rise() {
-    top_->clk_i = 1;
-    top_->eval();
-    if (fst_) fst_->dump(time_++);
-  }
-  void fall() {
-    top_->clk_i = 0;
-    top_->eval();
-    if (fst_) fst_->dump(time_++);
-  }
+  // A clock (VerilatedModel: only the rising edge evaluates the design; the falling edge's eval
+  // is cheap, the read-out address is the only input logic left).
   void edge() {
     rise();
     fall();
@@ -250,10 +225,6 @@ class RtlRunnerImpl final : public RtlRunner {
     }
   }
 
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Top> top_;
-  std::unique_ptr<VerilatedFstC> fst_;
-  std::uint64_t time_ = 0;
   int n_;
   RtlModelParams params_;
   int npe_, npix_;
