@@ -205,12 +205,14 @@ bool array_drives_vt(const std::vector<PpState<W>>& pp, const ArrayInput<W>& in)
 }
 
 // One advancing clock of the chain: every PP takes the word of the one above; VT results recorded.
+// Returns whether the last PP ended a column (a T_Col's clock 4) in this clock.
 template <int W, class Observer>
-void clock_array(std::vector<PpState<W>>& pp, const ArrayInput<W>& in, std::int64_t t, int columns, ArrayRun<W>& run,
+bool clock_array(std::vector<PpState<W>>& pp, const ArrayInput<W>& in, std::int64_t t, int columns, ArrayRun<W>& run,
                  std::vector<int>& sent, Observer& observer) {
   Word<W> word = in.word;
   PpCtrl ctrl = in.ctrl;
   int drivers = 0;
+  bool ends_column = false;
   const int n_pp = int(pp.size());
   for (int k = 0; k < n_pp; ++k) {
     const hls::PpOutputs<W> o = hls::pp_clock(pp[std::size_t(k)], word, ctrl);
@@ -225,8 +227,10 @@ void clock_array(std::vector<PpState<W>>& pp, const ArrayInput<W>& in, std::int6
     }
     word = o.output;
     ctrl = o.ctrl;
+    if (k == n_pp - 1) ends_column = o.ends_column;
   }
   if (drivers > 1) ++run.vt_conflicts;
+  return ends_column;
 }
 
 // Runs the array clock by clock on the stream until every PP has sent every column's result and
@@ -258,10 +262,8 @@ ArrayRun<W> run_array_frame(std::vector<PpState<W>>& pp, const std::vector<Strea
     }
     holding = false;
     if (in.ctrl.valid && next < stream.size()) ++next;
-    clock_array(pp, in, t, columns, run, sent, observer);
-    const PpState<W>& tail = pp.back();
-    if (std::all_of(sent.begin(), sent.end(), [&](int c) { return c == columns; }) && tail.clock.value() == 4 &&
-        hls::command_kind(tail.RGI) == hls::kKindCol) {
+    const bool column_left = clock_array(pp, in, t, columns, run, sent, observer);
+    if (column_left && std::all_of(sent.begin(), sent.end(), [&](int c) { return c == columns; })) {
       run.clocks = t;
       return run;
     }

@@ -58,6 +58,7 @@ struct PpOutputs {
   Word<W> output;  // RGres before this clock's edge
   PpCtrl ctrl;
   VtBus<W> vt;
+  bool ends_column = false;  // this clock is a T_Col's clock 4 (pp_ends_column)
 };
 
 // Power-on / configuration: every register 0 except RGtin = MAX and RGeps = eps (< 0).
@@ -86,6 +87,13 @@ template <int W>
 CIG_HLS_INLINE bool pp_drives_vt(const PpState<W>& st, const PpCtrl& ctrl) {
   return ctrl.valid && pp_next_clock(st, ctrl).value() == 2 && command_kind(st.RGI) == kKindCol &&
          !command_first(st.RGI);
+}
+
+// Whether this clock is a T_Col's clock 4, the last of a column at this PP: at the chain's last PP
+// the column has left the array (the array's column-done).
+template <int W>
+CIG_HLS_INLINE bool pp_ends_column(const PpState<W>& st, const PpCtrl& ctrl) {
+  return ctrl.valid && pp_next_clock(st, ctrl).value() == 4 && command_kind(st.RGI) == kKindCol;
 }
 
 template <int W>
@@ -167,6 +175,7 @@ CIG_HLS_INLINE PpOutputs<W> pp_clock(PpState<W>& st, const Word<W>& input, const
   out.output = st.RGres;
   out.ctrl.start = st.Tctrl;
   out.ctrl.valid = st.Tvalid;
+  out.ends_column = pp_ends_column(st, ctrl);
   if (!ctrl.valid) {  // a bubble: nothing but the delayed Ctrl lines moves
     st.Tctrl = false;
     st.Tvalid = false;

@@ -71,9 +71,7 @@ void check_pe_cycle(Model& m, const hls::PpState<W>& st, const hls::PpCtrl& ctrl
     ASSERT_EQ(std::uint64_t(m.vt_par_o), std::uint64_t(st.RGpar.value())) << "cycle " << cycle << ": VT RGpar";
     ASSERT_EQ(std::uint64_t(m.vt_obj_o) & mask, word_bits(st.RGobj)) << "cycle " << cycle << ": VT RGobj";
   }
-  const bool clock4 =
-      ctrl.valid && hls::pp_next_clock(st, ctrl).value() == 4 && hls::command_kind(st.RGI) == hls::kKindCol;
-  ASSERT_EQ(bool(m.col_clock4_o), clock4) << "cycle " << cycle << ": T_Col clock 4";
+  ASSERT_EQ(bool(m.col_clock4_o), hls::pp_ends_column(st, ctrl)) << "cycle " << cycle << ": T_Col clock 4";
 }
 
 template <class Model, int W>
