@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "common/provenance.hpp"
 #include "hls/formatter/records.hpp"
 #include "hls/segment/frame_memory.hpp"
 #include "hls/segment/overload.hpp"
@@ -67,7 +68,11 @@ bool scene_exceeds_ids(const Scene& scene) {
 }
 
 std::string report_text(const nlohmann::ordered_json& report) {
-  return report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+  nlohmann::ordered_json with;
+  with["provenance"] = provenance_json();
+  for (auto it = report.begin(); it != report.end(); ++it)
+    if (it.key() != "provenance") with[it.key()] = it.value();
+  return with.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::string drop_warning(const nlohmann::ordered_json& engine_report, const std::string& image) {

@@ -117,7 +117,8 @@ inline std::string safe_name(const std::string& s) {
 void check_output_file(const std::string& file, const char* option);
 // An output folder: it exists and is writable, or can be created.
 void check_output_dir(const std::string& dir, const char* option);
-// A JSON report as text: strings that are not UTF-8 (paths) are written with U+FFFD in place of
+// A JSON report as text, led by its "provenance" (version, commit, command line, date:
+// common/provenance.hpp). Strings that are not UTF-8 (paths) are written with U+FFFD in place of
 // their invalid bytes instead of failing after the work is done.
 std::string report_text(const nlohmann::ordered_json& report);
 

@@ -119,7 +119,7 @@ int CullCommand::run() {
                      {"ms", r.ms},
                      {"false_negatives", r.false_negatives},
                      {"false_positives", r.false_positives}});
-    write_text_file(report_file, rep.dump(2) + "\n");
+    write_text_file(report_file, report_text(rep));
   }
   return 0;
 }
