@@ -2,7 +2,8 @@
 //                   [--channel C] [--out DIR] [--report FILE]
 // Renders INPUT (a scene or a polygon list) with engine E and with the reference, and prints per
 // frame and channel the PSNR, the maximum absolute error per colour channel, the pixels off by
-// more than 2 LSB and the pixels whose polygon id differs; writes difference images (x8) to DIR.
+// more than 2 LSB and the pixels whose polygon id differs; writes difference images (x8) and
+// side-by-side review images to DIR (review_outputs.hpp).
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "cli/compare_command.hpp"
 #include "cli/frame_jobs.hpp"
+#include "cli/review_outputs.hpp"
 #include "image/image_compare.hpp"
 #include "registry/engine_registry.hpp"
 
@@ -28,7 +30,10 @@ void CompareCommand::add_to(CLI::App& app) {
       "--reference", reference,
       "float (default), float-snap (vertices snapped to the formatter grid) or float-snap-priority (snapped, visibility by list order as the engines)");
   add_reference_spp(sub, reference_spp);
-  sub->add_option("--out", out_dir, "write difference images (|error| x 8) here");
+  sub->add_option("--out", out_dir,
+                  "write per image frame_KKKK_chC_diff.png (|error| x 8) and frame_KKKK_chC_side.png: engine | "
+                  "reference | error map, the largest |error| of R, G, B in bins 0 (grey), 1, 2, 4, ..., 64, 128+ LSB, "
+                  "magenta where the polygon id differs (docs/review_outputs.md)");
   sub->add_option("--report", report_file, "write a JSON report");
   engine.add_to(sub, true);
   model_limit.add_to(sub);
@@ -81,6 +86,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
                      (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) + "_diff.png"))
                         .string(),
                     difference_image(got.out.image, want.out.image, 8));
+        if (!c.out_dir.empty()) write_side_image(c.out_dir, rows[k], c.engine.engine, c.reference, got.out, want.out);
         if (jobs.size() > 3) {
           std::lock_guard<std::mutex> lock(mutex);
           std::cerr << "\rcig: compared " << k + 1 << "/" << jobs.size() << std::flush;
