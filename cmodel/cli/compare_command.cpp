@@ -1,9 +1,9 @@
 // cig compare INPUT --engine E [--reference float|float-snap] [--frame K | --frames A:B]
-//                   [--channel C] [--out DIR] [--report FILE]
+//                   [--channel C] [--out DIR [--html]] [--report FILE]
 // Renders INPUT (a scene or a polygon list) with engine E and with the reference, and prints per
 // frame and channel the PSNR, the maximum absolute error per colour channel, the pixels off by
 // more than 2 LSB and the pixels whose polygon id differs; writes difference images (x8) and
-// side-by-side review images to DIR (review_outputs.hpp).
+// side-by-side review images to DIR, and with --html DIR/index.html (review_outputs.hpp).
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
@@ -34,7 +34,9 @@ void CompareCommand::add_to(CLI::App& app) {
                   "write per image frame_KKKK_chC_diff.png (|error| x 8) and frame_KKKK_chC_side.png: engine | "
                   "reference | error map, the largest |error| of R, G, B in bins 0 (grey), 1, 2, 4, ..., 64, 128+ LSB, "
                   "magenta where the polygon id differs (docs/review_outputs.md)");
-  sub->add_option("--report", report_file, "write a JSON report");
+  sub->add_option("--report", report_file, "write a JSON report (with --html: default DIR/report.json)");
+  sub->add_flag("--html", html,
+                "also write DIR/index.html (needs --out): the images, the table, the report, provenance");
   engine.add_to(sub, true);
   model_limit.add_to(sub);
 }
@@ -157,6 +159,7 @@ int CompareCommand::run() {
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   jobs.check_capacity(*make_engine(engine.engine, eo));
+  if (html) prepare_compare_html(out_dir, report_file);
   if (!out_dir.empty()) check_output_dir(out_dir, "--out");
   if (!report_file.empty()) check_output_file(report_file, "--report");
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
@@ -180,6 +183,7 @@ int CompareCommand::run() {
   print_totals(totals, rows.size(), classify, ids_share, priority_share);
   rep.update(to_json(totals, ids_share, priority_share));
   if (!report_file.empty()) write_text_file(report_file, report_text(rep));
+  if (html) write_compare_html(out_dir, report_file, rep, rows, totals);
   return 0;
 }
 

@@ -1,7 +1,8 @@
-// cig render SCENE [--frame K | --frames A:B] [--channel C] [--out DIR] [--report FILE] [--ids]
+// cig render SCENE [--frame K | --frames A:B] [--channel C] [--out DIR] [--report FILE] [--ids] [--html]
 //                  [--threads N] [--pipelines N] + the engine options
 // Everything that can be wrong with the input is checked before anything is written.
 #include "cli/render_command.hpp"
+#include "cli/review_outputs.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -34,6 +35,9 @@ void RenderCommand::add_to(CLI::App& app) {
                   "disjoint lists, each rasterised on its own thread, merged by priority (priority engines)")
       ->check(CLI::Range(1, 16));
   sub->add_flag("--ids", write_ids_files, "also write per-channel id buffers (CIGIDS1)");
+  sub->add_flag("--html", html,
+                "also write DIR/index.html: the images, the per-frame and channel counts and times, the report, "
+                "provenance (docs/review_outputs.md)");
   engine.add_to(sub);
   model_limit.add_to(sub);
 }
@@ -136,6 +140,7 @@ int RenderCommand::run() {
   check_output_dir(out_dir, "--out");
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
   else check_output_file(report_file, "--report");
+  if (html) prepare_render_html(out_dir);
   check_frames(scene, a, b, channels, engine.engine, eo);
   std::filesystem::create_directories(out_dir);
 
@@ -169,6 +174,7 @@ int RenderCommand::run() {
   // Phase 3: the report.
   report["total_ms"] = ms_since(t_all);
   write_text_file(report_file, report_text(report));
+  if (html) write_render_html(out_dir, report_file, report);
   std::cout << "cig: rendered " << (b - a + 1) << " frame(s) x " << channels.size() << " channel(s) of " << scene_file
             << " to " << out_dir << " in " << int(ms_since(t_all)) << " ms (report " << report_file << ")\n";
   return 0;

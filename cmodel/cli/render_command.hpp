@@ -16,6 +16,7 @@ struct RenderCommand {
   int frame_k = -1, channel = -1, threads = 1;
   int pipelines = 1;  // rendering pipelines per channel (seed 000's Nc)
   bool write_ids_files = false;
+  bool html = false;  // --html: DIR/index.html
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;
   ModelLimitArgs model_limit;

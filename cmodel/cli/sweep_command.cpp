@@ -1,6 +1,7 @@
 // cig sweep INPUT --engine E --vary KEY=V1,V2,... [--vary KEY2=...]... [--engine-opt K=V]...
 //                 [--reference float|float-snap|float-snap-priority] [--reference-spp N]
 //                 [--frame K | --frames A:B] [--channel C] [--repeat R] [--report FILE] [--plot FILE.png]
+//                 [--html DIR]
 // Run time against error: for every combination of the values of the varied engine options (any
 // engine, any option it accepts: samples per pixel, a format, an architecture, ...), renders the
 // chosen images (a polygon list, or a scene's frames x channels) with the engine, times the engine
@@ -26,6 +27,7 @@
 
 #include "cli/frame_jobs.hpp"
 #include "cli/gnuplot_plot.hpp"
+#include "cli/review_outputs.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "registry/engine_registry.hpp"
@@ -48,6 +50,9 @@ void SweepCommand::add_to(CLI::App& app) {
   sub->add_option("--repeat", repeat, "time each image R times, keep the best (default 3)")->check(CLI::Range(1, 1000));
   sub->add_option("--report", report_file, "write a JSON report");
   sub->add_option("--plot", plot_file, "write PSNR against time, Pareto points marked, as a PNG (gnuplot)");
+  sub->add_option("--html", html_dir,
+                  "write DIR/index.html: the table, the plot, the report, provenance; the report and the plot go to "
+                  "DIR/report.json and DIR/plot.png unless --report and --plot name files (docs/review_outputs.md)");
   engine.add_to(sub);
   model_limit.add_to(sub);
   sub->get_option("--engine")->required();
@@ -264,6 +269,7 @@ int SweepCommand::run() {
       jobs.check_capacity(*engines[v]);
     } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
   }
+  if (!html_dir.empty()) prepare_sweep_html(html_dir, report_file, plot_file);
   if (!report_file.empty()) check_output_file(report_file, "--report");
   check_plot_output(plot_file, "--plot");
   std::vector<SweepRow> rows = measure(jobs, combos, ro, engines, repeat);
@@ -289,7 +295,9 @@ int SweepCommand::run() {
                "cig sweep " + engine.engine + " on " + input + " against " + reference + " at " +
                    std::to_string(reference_spp) + " samples per pixel");
   if (!report_file.empty()) write_text_file(report_file, report_text(rep));
-  std::cout << table_text(*this, rows, jobs);
+  const std::string table = table_text(*this, rows, jobs);
+  if (!html_dir.empty()) write_sweep_html(html_dir, report_file, plot_file, rep, table);
+  std::cout << table;
   return 0;
 }
 

@@ -14,6 +14,7 @@ namespace cig::cli {
 struct SweepCommand {
   CLI::App* sub = nullptr;
   std::string input, report_file, plot_file, frames_text, reference = "float";
+  std::string html_dir;  // --html DIR: DIR/index.html
   std::vector<std::string> vary;
   int frame_k = -1, channel = -1, repeat = 3, reference_spp = 16;
   CLI::Option* frame_opt = nullptr;
