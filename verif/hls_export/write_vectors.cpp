@@ -50,6 +50,7 @@
 #include "tb/span_pieces_top.hpp"
 #include "tb/video_channel_top.hpp"
 #include "tb/y_sorter_top.hpp"
+#include "vector_file.hpp"
 
 namespace cig::hls_tb {
 namespace {
@@ -65,33 +66,6 @@ class Rng {
 
  private:
   std::mt19937_64 gen_{20261125};
-};
-
-// One vector file: every add() runs the case and writes its inputs and outputs.
-template <class Case>
-class VectorFile {
- public:
-  VectorFile(const std::string& dir, const std::string& what) : path_(dir + "/" + Case::kTop + ".vec"), out_(path_) {
-    out_ << "# Golden vectors of " << Case::kTop << ": " << what << ".\n"
-         << "# Written by cig_hls_vectors (verif/hls_export/write_vectors.cpp); replayed by tb_" << Case::kTop
-         << ".\ntop " << Case::kTop << '\n';
-  }
-  ~VectorFile() noexcept(false) {
-    out_.close();
-    if (!out_) throw std::runtime_error(path_ + ": cannot write the vector file");
-    std::cout << path_ << ": " << count_ << " vectors\n";
-  }
-  void add(const typename Case::Input& in) {
-    auto out = std::make_unique<typename Case::Output>();
-    Case::run(in, *out);
-    out_ << '>' << to_text(in) << "\n<" << to_text(*out) << '\n';
-    ++count_;
-  }
-
- private:
-  std::string path_;
-  std::ofstream out_;
-  int count_ = 0;
 };
 
 // ---- Primitives ---------------------------------------------------------------------------------
