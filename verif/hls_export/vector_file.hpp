@@ -1,5 +1,6 @@
-// The golden-vector generator's vector file (cig_hls_vectors, write_vectors.cpp): runs each added
-// input through its testbench case and writes the inputs and outputs.
+// The golden-vector generator's pieces (cig_hls_vectors: write_vectors.cpp and one file per stage's
+// writers): a vector file that runs each added input through its testbench case, and the writers
+// of the stages that live in their own files.
 #pragma once
 
 #include <fstream>
@@ -40,5 +41,8 @@ class VectorFile {
   int count_ = 0;
   std::unique_ptr<typename Case::Output> last_;
 };
+
+// Stage A (write_vectors_manager.cpp): manager_channel_setup_top, manager_visibility_top.
+void write_manager_vectors(const std::string& dir, const std::string& scenes);
 
 }  // namespace cig::hls_tb

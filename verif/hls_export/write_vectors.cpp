@@ -8,7 +8,9 @@
 // polygons and light points (a fixed-seed mt19937_64, whose sequence the C++ standard fixes), and
 // corner primitives; each downstream kernel takes what its upstream kernels made of them, as in
 // the pipeline (formatter -> edge generator -> frame memory / segment generator -> Y sorter ->
-// video channel; formatter -> quadtree setup -> PE -> mask memory / pixel processor).
+// video channel; formatter -> quadtree setup -> PE -> mask memory / pixel processor). Stage A's
+// kernels take a scene through the C model: write_vectors_manager.cpp (the objects of
+// scenes/airfield.json through its channels).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -529,6 +531,7 @@ void write_all(const std::string& dir, const std::string& scenes) {
   write_span_pieces(dir, bent, s);
   write_span_piece_edges(dir, bent);
   write_quadtree_span_setup(dir, bent);
+  write_manager_vectors(dir, scenes);
 }
 
 }  // namespace
