@@ -44,5 +44,7 @@ class VectorFile {
 
 // Stage A (write_vectors_manager.cpp): manager_channel_setup_top, manager_visibility_top.
 void write_manager_vectors(const std::string& dir, const std::string& scenes);
+// Stage F (write_vectors_invparam.cpp): invparam_column_top, invparam_pixel_processor_top.
+void write_invparam_vectors(const std::string& dir, const std::string& scenes);
 
 }  // namespace cig::hls_tb

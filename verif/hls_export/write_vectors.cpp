@@ -9,8 +9,9 @@
 // corner primitives; each downstream kernel takes what its upstream kernels made of them, as in
 // the pipeline (formatter -> edge generator -> frame memory / segment generator -> Y sorter ->
 // video channel; formatter -> quadtree setup -> PE -> mask memory / pixel processor). Stage A's
-// kernels take a scene through the C model: write_vectors_manager.cpp (the objects of
-// scenes/airfield.json through its channels).
+// and F's kernels take scenes through the C model: write_vectors_manager.cpp (the objects of
+// scenes/airfield.json through its channels) and write_vectors_invparam.cpp (the polyhedra of
+// scenes/polyhedra.json set up as the invparam engine sets them up, and the array's token stream).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -532,6 +533,7 @@ void write_all(const std::string& dir, const std::string& scenes) {
   write_span_piece_edges(dir, bent);
   write_quadtree_span_setup(dir, bent);
   write_manager_vectors(dir, scenes);
+  write_invparam_vectors(dir, scenes);
 }
 
 }  // namespace
