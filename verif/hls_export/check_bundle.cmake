@@ -1,6 +1,7 @@
 # ctest hls_export.bundle.TOP: exports TOP's bundle to OUT (outside the tree), then builds its
 # testbench with the system compiler from the bundle alone, in both type configurations, and
-# replays the vectors from inside the bundle (the testbench's default path).
+# replays the vectors from inside the bundle (the testbench's default path). README_EXPECT: text the
+# bundle's README.md must hold (a port's row), or empty.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${EXPORT} ${TOP} ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
@@ -12,6 +13,13 @@ foreach(f README.md run_vitis.tcl run_catapult.tcl src/${TOP}.cpp tb/tb_${TOP}.c
     message(FATAL_ERROR "the bundle has no ${f}")
   endif()
 endforeach()
+if(NOT README_EXPECT STREQUAL "")
+  file(READ ${OUT}/README.md readme)
+  string(FIND "${readme}" "${README_EXPECT}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the bundle's README.md does not state: ${README_EXPECT}")
+  endif()
+endif()
 file(MAKE_DIRECTORY ${OUT}-build)
 foreach(config native systemc)
   set(flags -std=c++17 -O1 -I.)

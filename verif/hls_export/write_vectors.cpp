@@ -8,7 +8,10 @@
 // polygons and light points (a fixed-seed mt19937_64, whose sequence the C++ standard fixes), and
 // corner primitives; each downstream kernel takes what its upstream kernels made of them, as in
 // the pipeline (formatter -> edge generator -> frame memory / segment generator -> Y sorter ->
-// video channel; formatter -> quadtree setup -> PE -> mask memory / pixel processor).
+// video channel; formatter -> quadtree setup -> PE -> mask memory / pixel processor). Stage A's
+// and F's kernels take scenes through the C model: write_vectors_manager.cpp (the objects of
+// scenes/airfield.json through its channels) and write_vectors_invparam.cpp (the polyhedra of
+// scenes/polyhedra.json set up as the invparam engine sets them up, and the array's token stream).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -50,6 +53,7 @@
 #include "tb/span_pieces_top.hpp"
 #include "tb/video_channel_top.hpp"
 #include "tb/y_sorter_top.hpp"
+#include "vector_file.hpp"
 
 namespace cig::hls_tb {
 namespace {
@@ -65,33 +69,6 @@ class Rng {
 
  private:
   std::mt19937_64 gen_{20261125};
-};
-
-// One vector file: every add() runs the case and writes its inputs and outputs.
-template <class Case>
-class VectorFile {
- public:
-  VectorFile(const std::string& dir, const std::string& what) : path_(dir + "/" + Case::kTop + ".vec"), out_(path_) {
-    out_ << "# Golden vectors of " << Case::kTop << ": " << what << ".\n"
-         << "# Written by cig_hls_vectors (verif/hls_export/write_vectors.cpp); replayed by tb_" << Case::kTop
-         << ".\ntop " << Case::kTop << '\n';
-  }
-  ~VectorFile() noexcept(false) {
-    out_.close();
-    if (!out_) throw std::runtime_error(path_ + ": cannot write the vector file");
-    std::cout << path_ << ": " << count_ << " vectors\n";
-  }
-  void add(const typename Case::Input& in) {
-    auto out = std::make_unique<typename Case::Output>();
-    Case::run(in, *out);
-    out_ << '>' << to_text(in) << "\n<" << to_text(*out) << '\n';
-    ++count_;
-  }
-
- private:
-  std::string path_;
-  std::ofstream out_;
-  int count_ = 0;
 };
 
 // ---- Primitives ---------------------------------------------------------------------------------
@@ -555,6 +532,8 @@ void write_all(const std::string& dir, const std::string& scenes) {
   write_span_pieces(dir, bent, s);
   write_span_piece_edges(dir, bent);
   write_quadtree_span_setup(dir, bent);
+  write_manager_vectors(dir, scenes);
+  write_invparam_vectors(dir, scenes);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 // A record is the concatenation of its fields in the order its Fields<T>::visit names them
 // (record_fields.hpp); nothing marks a record's start or end, the reader knows the structure.
 //   Int<W>, Fixed<W, I>        signed decimal: the raw two's complement value
+//   WideInt<W> (W <= 128)      signed decimal: the W-bit two's complement value (stage F's word)
 //   UInt<W>, UFixed<W, I>      unsigned decimal: the raw value
 //   ZFloat                     its 15-bit code, decimal
 //   bool, int                  0/1, decimal
@@ -27,6 +28,13 @@
 
 #include "hls/types/fixed.hpp"
 #include "hls/types/zfloat.hpp"
+
+// WideInt<W> (hls/types/wide_int.hpp) is declared, not included: only the bundles whose kernels
+// use it include its header, and its leaf below is instantiated only there.
+CIG_HLS_BEGIN_NAMESPACE
+template <int W>
+class WideInt;
+CIG_HLS_END_NAMESPACE
 
 // The testbench calls the synthesis top through CIG_TB_DESIGN, so that Catapult's SCVerify
 // (CCS_SCVERIFY) can put the RTL in its place; Vitis HLS replaces the plain call itself.
@@ -101,9 +109,57 @@ struct Leaf<int> {
   static void set(int& x, std::int64_t v) { x = int(v); }
 };
 
+// Words wider than 64 bits: a value as a signed 128-bit integer, its decimal text and back.
+__extension__ typedef __int128 Int128;
+__extension__ typedef unsigned __int128 UInt128;
+
+template <int W>
+struct Leaf<hls::WideInt<W>> {
+  static constexpr bool is = true, is_signed = true, is_wide = true;
+  static constexpr int width = W;
+  static Int128 raw(const hls::WideInt<W>& x) {
+    return static_cast<Int128>((static_cast<UInt128>(x.high_limb()) << 64) | x.low_limb());
+  }
+  static void set(hls::WideInt<W>& x, Int128 v) {
+    const UInt128 bits = static_cast<UInt128>(v);
+    x = hls::WideInt<W>::from_limbs(std::uint64_t(bits >> 64), std::uint64_t(bits));
+  }
+};
+template <class T, class = void>
+struct IsWideLeaf : std::false_type {};
+template <class T>
+struct IsWideLeaf<T, std::enable_if_t<Leaf<T>::is_wide>> : std::true_type {};
+
+inline std::string decimal_of(Int128 v) {
+  UInt128 m = v < 0 ? UInt128(0) - static_cast<UInt128>(v) : static_cast<UInt128>(v);
+  std::string digits;
+  do {
+    digits.insert(digits.begin(), char('0' + int(m % 10)));
+    m /= 10;
+  } while (m != 0);
+  return v < 0 ? "-" + digits : digits;
+}
+// A signed decimal within [lo, hi]; false on any other text.
+inline bool parse_decimal(const std::string& t, Int128 lo, Int128 hi, Int128& v) {
+  const bool negative = !t.empty() && t[0] == '-';
+  const std::size_t first = negative ? 1 : 0;
+  if (t.size() == first) return false;
+  const UInt128 limit = negative ? UInt128(0) - static_cast<UInt128>(lo) : static_cast<UInt128>(hi);
+  UInt128 m = 0;
+  for (std::size_t k = first; k < t.size(); ++k) {
+    if (t[k] < '0' || t[k] > '9') return false;
+    const unsigned d = unsigned(t[k] - '0');
+    if (m > limit / 10 || m * 10 + d > limit) return false;  // m * 10 <= limit <= 2^127: no wrap
+    m = m * 10 + d;
+  }
+  v = negative ? static_cast<Int128>(UInt128(0) - m) : static_cast<Int128>(m);
+  return true;
+}
+
 template <class T>
 std::string leaf_token(const T& x) {
-  return std::to_string(Leaf<T>::raw(x));
+  if constexpr (IsWideLeaf<T>::value) return decimal_of(Leaf<T>::raw(x));
+  else return std::to_string(Leaf<T>::raw(x));
 }
 
 // ---- Writing --------------------------------------------------------------------------------------
@@ -206,7 +262,14 @@ class TextReader {
     if (!t) return;
     char* end = nullptr;
     errno = 0;
-    if constexpr (Leaf<T>::is_signed) {
+    if constexpr (IsWideLeaf<T>::value) {
+      const int w = Leaf<T>::width;
+      const Int128 hi = static_cast<Int128>((UInt128(1) << (w - 1)) - 1), lo = -hi - 1;
+      Int128 v = 0;
+      if (!parse_decimal(*t, lo, hi, v))
+        return fail("'" + *t + "' is not a signed " + std::to_string(w) + "-bit value");
+      Leaf<T>::set(x, v);
+    } else if constexpr (Leaf<T>::is_signed) {
       const long long v = std::strtoll(t->c_str(), &end, 10);
       const int w = Leaf<T>::width;
       const long long lo = w >= 64 ? std::numeric_limits<long long>::min() : -(1LL << (w - 1));
