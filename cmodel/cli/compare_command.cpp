@@ -13,6 +13,7 @@
 
 #include "cli/compare_command.hpp"
 #include "cli/frame_jobs.hpp"
+#include "common/progress.hpp"
 #include "image/image_compare.hpp"
 #include "registry/engine_registry.hpp"
 
@@ -54,6 +55,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
   std::mutex mutex;
+  Progress progress("cig compare", (long long)jobs.size());
   auto worker = [&] {
     try {
       auto eng = make_engine(c.engine.engine, eo);
@@ -68,12 +70,9 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
-        const std::string lost = drop_warning(
-            got.report, "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)));
-        if (!lost.empty()) {
-          std::lock_guard<std::mutex> lock(mutex);
-          std::cerr << lost;
-        }
+        const std::string image =
+            "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k));
+        progress.note(drop_warning(got.report, image));
         if (classify && rows[k].error.sum_squared > 0)
           attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
         if (!c.out_dir.empty())
@@ -81,10 +80,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
                      (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) + "_diff.png"))
                         .string(),
                     difference_image(got.out.image, want.out.image, 8));
-        if (jobs.size() > 3) {
-          std::lock_guard<std::mutex> lock(mutex);
-          std::cerr << "\rcig: compared " << k + 1 << "/" << jobs.size() << std::flush;
-        }
+        progress.step(image);
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
@@ -96,7 +92,6 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
   for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
-  if (jobs.size() > 3) std::cerr << "\n";
   if (error) std::rethrow_exception(error);
   return rows;
 }
