@@ -1,7 +1,8 @@
 // `--engine float`: the float reference (reference_raster.hpp) behind the engine interface.
 // Options: --snap (positions snapped to the formatter grid first, exact depth planes kept) and
 // the --engine-opt table below (visibility, spp). It draws every polygon and light point it takes
-// (its capacity, kMaxReferencePolygons, is checked before any work), so it drops nothing.
+// (its capacity, kMaxReferencePolygons, is checked before any work), so it drops nothing: the
+// report's polygons_empty are polygons that cover no sample.
 #pragma once
 
 #include <memory>
