@@ -2,13 +2,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "common/provenance.hpp"
 #include "hls/formatter/records.hpp"
-#include "hls/segment/frame_memory.hpp"
-#include "hls/segment/overload.hpp"
 
 namespace cig::cli {
 
@@ -37,6 +36,49 @@ fs::path nearest_existing(fs::path p) {
 }
 
 }  // namespace
+
+void EngineArgs::add_to(CLI::App* app, bool required) {
+  std::string names;
+  for (const auto& n : engine_names()) names += (names.empty() ? "" : ", ") + n;
+  auto* option = app->add_option("--engine", engine, "raster engine (" + names + "; `cig engines` lists them)");
+  if (required) option->required();
+  app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable; `cig engines` lists each engine's)");
+  app->add_flag("--snap", snap, "float engine: snap vertex positions to the formatter's grid first");
+  app->add_option("--fan-split", fan_split,
+                  "split polygons whose vertex I or 1/Z are not planar into triangle fans: on (default) | off")
+      ->check(CLI::IsMember({"on", "off"}));
+  // One option per shorthand, its help the key's: "quadtree, quadtree-double: masks=on|off: ...".
+  std::map<std::string, std::pair<std::string, std::string>> seen;  // shorthand -> (engines, key's text)
+  std::vector<std::string> order;
+  for (const EngineInfo& info : engine_infos())
+    for (const EngineOptionSpec& spec : info.options) {
+      if (spec.shorthand.empty()) continue;
+      auto [it, fresh] = seen.try_emplace(spec.shorthand, info.name, spec.key + "=" + spec.range() + ": " + spec.help);
+      if (fresh) order.push_back(spec.shorthand);
+      else it->second.first += ", " + info.name;
+    }
+  for (const std::string& shorthand : order)
+    app->add_option(shorthand, shorthands[shorthand], seen[shorthand].first + ": " + seen[shorthand].second);
+}
+
+EngineOptions EngineArgs::options() const {
+  EngineOptions o;
+  o.snap = snap;
+  o.fan_split = fan_split == "on";
+  for (const auto& kv : opts) {
+    auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("", "--engine-opt", "'" + kv + "' is not of the form KEY=VALUE");
+    o.params[kv.substr(0, eq)] = kv.substr(eq + 1);
+  }
+  for (const EngineInfo& info : engine_infos())
+    for (const EngineOptionSpec& spec : info.options) {
+      const auto it = shorthands.find(spec.shorthand);
+      if (!spec.shorthand.empty() && it != shorthands.end() && !it->second.empty()) o.params[spec.key] = it->second;
+    }
+  make_engine(engine, o);  // validates the name and the options before any work
+  return o;
+}
 
 void check_output_dir(const std::string& dir, const char* option) {
   if (dir.empty()) throw InputError("", option, "the output folder is empty");
@@ -75,24 +117,32 @@ std::string report_text(const nlohmann::ordered_json& report) {
   return with.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
+// "the segment engine's memories were full: 3 polygon(s) dropped by ...; 2 segment(s) ...", a
+// clause per cause with its nonzero counts, in the engine's order.
 std::string drop_warning(const nlohmann::ordered_json& engine_report, const std::string& image) {
   if (!engine_report.contains("dropped")) return "";
-  const nlohmann::ordered_json& d = engine_report["dropped"];
-  const long overload = d.value("polygons_overload", 0L), frame_full = d.value("polygons_frame_memory_full", 0L),
-             segment_full = d.value("segments_segment_memory_full", 0L);
-  if (overload == 0 && frame_full == 0 && segment_full == 0) return "";
-  std::string text = "cig: warning: " + image + ": the " + engine_report.value("engine", std::string("engine")) +
-                     " engine's memories were full:";
-  if (overload)
-    text += " " + std::to_string(overload) +
-            " polygon(s) dropped by the overload threshold (the segment memory holds " +
-            std::to_string(hls::kSegmentBankWords) + " segments a field);";
-  if (frame_full)
-    text += " " + std::to_string(frame_full) + " polygon(s) did not fit the frame memory (" +
-            std::to_string(hls::kFrameBankWords) + " words a bank);";
-  if (segment_full) text += " " + std::to_string(segment_full) + " segment(s) did not fit the segment memory;";
-  text.back() = '\n';
-  return text;
+  const std::string engine = engine_report.value("engine", std::string("engine"));
+  const std::vector<DropKind> none;
+  const auto& kinds = engine_report.contains("engine") ? engine_info(engine).drops : none;
+  const nlohmann::ordered_json& dropped = engine_report["dropped"];
+  std::string text;
+  for (const DropKind::Cause cause : {DropKind::Cause::kMemoryFull, DropKind::Cause::kCannotDraw}) {
+    std::string counts;
+    for (const DropKind& k : kinds) {
+      const long n = dropped.value(k.key, 0L);
+      if (k.cause == cause && n != 0) counts += (counts.empty() ? " " : "; ") + std::to_string(n) + " " + k.what;
+    }
+    if (counts.empty()) continue;
+    text += (text.empty() ? "" : "; ") +
+            ("the " + engine + " engine" +
+             (cause == DropKind::Cause::kMemoryFull ? "'s memories were full:" : " cannot draw all of its input:") +
+             counts);
+  }
+  for (auto it = dropped.begin(); it != dropped.end(); ++it)  // a count the engine does not describe
+    if (std::none_of(kinds.begin(), kinds.end(), [&](const DropKind& k) { return k.key == it.key(); }) &&
+        it.value() != 0)
+      text += (text.empty() ? "the " + engine + " engine dropped: " : "; ") + it.key() + " " + it.value().dump();
+  return text.empty() ? "" : "cig: warning: " + image + ": " + text + "\n";
 }
 
 }  // namespace cig::cli

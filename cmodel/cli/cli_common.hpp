@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,51 +24,18 @@ namespace cig::cli {
 // A scene has 1 to 8 channels (scene_loader.cpp): --channel takes 0..7 (range-checked by CLI11).
 constexpr int kMaxChannelIndex = 7;
 
-// --engine, --engine-opt, --snap and the quadtree shorthands --arch, --masks.
+// --engine, --engine-opt, --snap and the shorthands of engine settings (--arch, --masks,
+// --start-window: EngineOptionSpec::shorthand, so they follow the engines' tables).
 struct EngineArgs {
   std::string engine = "float";
   std::vector<std::string> opts;
   bool snap = false;
   std::string fan_split = "on";
-  std::string arch, masks, start;  // shorthands for --engine-opt arch=... / masks=... / start=...
+  std::map<std::string, std::string> shorthands;  // shorthand option -> value given
 
   // `required`: the command compares an engine with the reference, so it must be named.
-  void add_to(CLI::App* app, bool required = false) {
-    auto* option = app->add_option(
-        "--engine", engine, "raster engine (" + [] {
-          std::string s;
-          for (const auto& n : engine_names()) s += (s.empty() ? "" : ", ") + n;
-          return s;
-        }() + ")");
-    if (required) option->required();
-    app->add_option("--engine-opt", opts, "engine setting KEY=VALUE (repeatable)");
-    app->add_flag("--snap", snap, "snap vertex positions to the formatter's 4096-unit grid first");
-    app->add_option("--fan-split", fan_split,
-                    "split polygons whose vertex I or 1/Z are not planar into triangle fans: on (default) | off")
-        ->check(CLI::IsMember({"on", "off"}));
-    app->add_option("--arch", arch,
-                    "quadtree engines: raster-processor architecture (seed 004 eq. 1, e.g. 9p, 7p2t, 8s1p)");
-    app->add_option("--masks", masks, "quadtree engines: multilevel priority masks on|off");
-    app->add_option("--start-window", start,
-                    "quadtree engines: a polygon's subdivision starts at the whole screen (screen, default) or "
-                    "at the smallest window holding its bounding box (bbox)");
-  }
-  EngineOptions options() const {
-    EngineOptions o;
-    o.snap = snap;
-    o.fan_split = fan_split == "on";
-    for (const auto& kv : opts) {
-      auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0)
-        throw InputError("", "--engine-opt", "'" + kv + "' is not of the form KEY=VALUE");
-      o.params[kv.substr(0, eq)] = kv.substr(eq + 1);
-    }
-    if (!arch.empty()) o.params["arch"] = arch;
-    if (!masks.empty()) o.params["masks"] = masks;
-    if (!start.empty()) o.params["start"] = start;
-    make_engine(engine, o);  // validates the name and the options before any work
-    return o;
-  }
+  void add_to(CLI::App* app, bool required = false);
+  EngineOptions options() const;
 };
 
 // --max-model-mb: the largest OBJ model a scene may reference (scenes/README.md, "Valid ranges").
@@ -126,10 +94,11 @@ std::string report_text(const nlohmann::ordered_json& report);
 // (hls::kMaxPolygonIds): only then must the frames go through stages A and B to be checked.
 bool scene_exceeds_ids(const Scene& scene);
 
-// The warning for what an engine's full memories lost in one image (the report's "dropped": the
-// segment processor's overload drops, frame-memory and segment-memory overflows), "" when nothing
-// was lost. `image` names it ("frame 3 channel 1", a file). Never silent: every command that
-// renders prints it on stderr.
+// The warning for what an engine left out of one image (its report's "dropped", engine_registry.hpp
+// EngineInfo::drops: the segment processor's overload drops and full memories, what stage F cannot
+// draw), one line with every nonzero count and what it means; "" when nothing was lost. `image`
+// names it ("frame 3 channel 1", a file). Never silent: every command that renders prints it on
+// stderr.
 std::string drop_warning(const nlohmann::ordered_json& engine_report, const std::string& image);
 
 // The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.

@@ -7,6 +7,7 @@
 #include "cli/arch_command.hpp"
 #include "cli/compare_command.hpp"
 #include "cli/cull_command.hpp"
+#include "cli/engines_command.hpp"
 #include "cli/manager_command.hpp"
 #include "cli/polys_command.hpp"
 #include "cli/raster_command.hpp"
@@ -28,6 +29,7 @@ struct Commands {
   CullCommand cull;
   ManagerCommand manager;
   WordLengthCommand wordlength;
+  EnginesCommand engines;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

@@ -15,6 +15,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/frame_jobs.hpp"
 #include "cli/review_outputs.hpp"
+#include "common/progress.hpp"
 #include "image/image_compare.hpp"
 #include "registry/engine_registry.hpp"
 
@@ -61,6 +62,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
   std::mutex mutex;
+  Progress progress("cig compare", (long long)jobs.size());
   auto worker = [&] {
     try {
       auto eng = make_engine(c.engine.engine, eo);
@@ -75,12 +77,9 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
         const EngineRun got = eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
-        const std::string lost = drop_warning(
-            got.report, "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k)));
-        if (!lost.empty()) {
-          std::lock_guard<std::mutex> lock(mutex);
-          std::cerr << lost;
-        }
+        const std::string image =
+            "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k));
+        progress.note(drop_warning(got.report, image));
         if (classify && rows[k].error.sum_squared > 0)
           attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
         if (!c.out_dir.empty())
@@ -89,10 +88,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
                         .string(),
                     difference_image(got.out.image, want.out.image, 8));
         if (!c.out_dir.empty()) write_side_image(c.out_dir, rows[k], c.engine.engine, c.reference, got.out, want.out);
-        if (jobs.size() > 3) {
-          std::lock_guard<std::mutex> lock(mutex);
-          std::cerr << "\rcig: compared " << k + 1 << "/" << jobs.size() << std::flush;
-        }
+        progress.step(image);
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
@@ -104,7 +100,6 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
   for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
-  if (jobs.size() > 3) std::cerr << "\n";
   if (error) std::rethrow_exception(error);
   return rows;
 }

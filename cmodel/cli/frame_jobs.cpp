@@ -63,6 +63,7 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
 
 void FrameJobs::check_capacity(const RasterEngine& engine) const {
   try {
+    if (scene_) engine.check_scene(*scene_);
     if (scene_ && !scene_exceeds_ids(*scene_)) {
       if (!jobs_.empty()) engine.check_raster(scene_->raster);
       return;

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <thread>
 
+#include "common/progress.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
@@ -136,6 +137,7 @@ int RenderCommand::run() {
   const std::vector<int> channels = selected_channels(scene, channel);
   const auto probe = make_engine(engine.engine, eo);
   probe->check_raster(scene.raster);
+  probe->check_scene(scene);
   if (pipelines > 1) probe->check_renders_parts();
   check_output_dir(out_dir, "--out");
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
@@ -148,6 +150,7 @@ int RenderCommand::run() {
   const ScenePipeline pipeline(scene);
   nlohmann::ordered_json report = render_report(*this, scene, eo, load_ms);
   const auto t_all = Clock::now();
+  Progress progress("cig render", b - a + 1);
   for (int frame = a; frame <= b; ++frame) {
     const auto t_frame = Clock::now();
     std::vector<ChannelOutput> outs = pipeline.render(frame, channels, engine.engine, eo, threads, pipelines);
@@ -161,14 +164,13 @@ int RenderCommand::run() {
     fr["output_ms"] = ms_since(t_out);
     fr["channels"] = nlohmann::ordered_json::array();
     for (auto& co : outs) {
-      std::cerr << drop_warning(co.report["raster"],
-                                "frame " + std::to_string(frame) + " channel " + std::to_string(co.channel));
+      progress.note(drop_warning(co.report["raster"],
+                                 "frame " + std::to_string(frame) + " channel " + std::to_string(co.channel)));
       fr["channels"].push_back(std::move(co.report));
     }
     report["frames"].push_back(std::move(fr));
-    if (b > a)
-      std::cerr << "cig: frame " << frame << " (" << (frame - a + 1) << "/" << (b - a + 1) << ") " << channels.size()
-                << " channel(s) in " << int(render_ms) << " ms\n";
+    progress.step("frame " + std::to_string(frame) + ": " + std::to_string(channels.size()) + " channel(s) in " +
+                  std::to_string(int(render_ms)) + " ms");
   }
 
   // Phase 3: the report.

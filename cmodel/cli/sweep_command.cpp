@@ -29,6 +29,7 @@
 #include "cli/gnuplot_plot.hpp"
 #include "cli/review_outputs.hpp"
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "image/image.hpp"
 #include "registry/engine_registry.hpp"
 
@@ -141,6 +142,7 @@ std::vector<SweepRow> measure(const FrameJobs& jobs, const std::vector<Combinati
   std::vector<SweepRow> rows(combos.size());
   for (std::size_t v = 0; v < rows.size(); ++v) rows[v].label = combos[v].label;
   auto ref = make_engine("float", ro);
+  Progress progress("cig sweep", (long long)(jobs.size() * rows.size()));
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const ScreenFrame f = jobs.screen_frame(k);
     const EngineRun want = ref->render(f);
@@ -156,12 +158,12 @@ std::vector<SweepRow> measure(const FrameJobs& jobs, const std::vector<Combinati
       if (got.report.contains("hardware_ms")) rows[v].hardware_ms += got.report["hardware_ms"].get<double>();
       else rows[v].has_hardware = false;
       rows[v].totals.add(compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out));
-      std::cerr << drop_warning(got.report, rows[v].label + ", frame " + std::to_string(jobs.frame(k)) + " channel " +
-                                                std::to_string(jobs.channel(k)));
+      const std::string image =
+          rows[v].label + ", frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k));
+      progress.note(drop_warning(got.report, image));
+      progress.step(image);
     }
-    if (jobs.size() > 1) std::cerr << "\rcig: sweep image " << k + 1 << "/" << jobs.size() << std::flush;
   }
-  if (jobs.size() > 1) std::cerr << "\n";
   return rows;
 }
 

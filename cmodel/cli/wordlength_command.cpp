@@ -224,7 +224,11 @@ int WordLengthCommand::run() {
   check_word_length_options(o);
   if (!report_file.empty()) check_output_file(report_file, "--report");
   check_plot_output(plot_file, "--plot");
-  const WordLengthStudy s = run_word_length_study(o);
+  WordLengthStudy s;
+  {
+    Progress progress("cig wordlength", (long long)(o.ranges.size()) * o.views);
+    s = run_word_length_study(o, &progress);
+  }
   const std::vector<std::string> claims = verdicts(s);
   if (!plot_file.empty()) write_plot(plot_file, s);
   if (!report_file.empty()) write_text_file(report_file, report_text(to_json(s, claims)));

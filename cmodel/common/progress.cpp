@@ -47,6 +47,14 @@ void Progress::within(long long done, long long total, const char* unit) {
   show(buf);
 }
 
+void Progress::note(const std::string& line) {
+  if (line.empty()) return;
+  std::lock_guard<std::mutex> guard(lock_);
+  if (line_open_) os_ << "\r\x1b[K";
+  line_open_ = false;
+  os_ << line << std::flush;
+}
+
 void Progress::step(const std::string& text) {
   std::lock_guard<std::mutex> guard(lock_);
   ++done_steps_;

@@ -32,6 +32,9 @@ class Progress {
   void within(long long done, long long total, const char* unit);
   // One more step finished; `text` says which ("frame 3 channel 1: 124845 cycles").
   void step(const std::string& text);
+  // A line of its own (a warning, ending in a newline) between progress lines: on a terminal the
+  // open progress line is cleared first and shown again at the next update. "" prints nothing.
+  void note(const std::string& line);
   long long steps_done() const { return done_steps_; }
   static bool stderr_is_terminal();
 

@@ -7,23 +7,19 @@
 
 namespace cig {
 
-int samples_per_pixel_side_log2(const std::string& spp, int max_side_log2, const char* engine) {
-  std::string known;
-  for (int t = 0; t <= max_side_log2; ++t) {
-    const std::string value = std::to_string(1 << (2 * t));
-    if (spp == value) return t;
-    known += (t ? t == max_side_log2 ? " or " : ", " : "") + value;
-  }
-  throw InputError("", "--engine-opt",
-                   std::string("engine '") + engine + "': spp='" + spp + "' is not " + known + " (samples per pixel)");
+const std::vector<DropKind>& RasterEngine::drop_kinds() const {
+  static const std::vector<DropKind> kNone;
+  return kNone;
 }
 
-int subpixel_bits_option(const std::string& value) {
-  for (int b = 0; b <= kMaxSubpixelBits; ++b)
-    if (value == std::to_string(b)) return b;
-  throw InputError("", "--engine-opt",
-                   "subpixel='" + value + "' is not 0.." + std::to_string(kMaxSubpixelBits) +
-                       " (the formatter grid at 1/2^B pixel)");
+void RasterEngine::complete_dropped(nlohmann::ordered_json& report) const {
+  const nlohmann::ordered_json given =
+      report.contains("dropped") ? report["dropped"] : nlohmann::ordered_json::object();
+  nlohmann::ordered_json dropped = nlohmann::ordered_json::object();
+  for (const DropKind& k : drop_kinds()) dropped[k.key] = given.value(k.key, 0L);
+  for (auto it = given.begin(); it != given.end(); ++it)
+    if (!dropped.contains(it.key())) dropped[it.key()] = it.value();
+  report["dropped"] = dropped;
 }
 
 void RasterEngine::check_formatter_grid(int raster) const {
@@ -58,6 +54,7 @@ EngineRun RasterEngine::render(const ScreenFrame& frame) {
   if (subpixel_bits_ >= 0)
     run.report["formatter_grid"] = {{"subpixel_bits", subpixel_bits_},
                                     {"grid_bits", hls::raster_log2_of(frame.raster) + subpixel_bits_}};
+  complete_dropped(run.report);
   return run;
 }
 
@@ -83,6 +80,7 @@ EngineRun RasterEngine::render_parts(const std::vector<ScreenFrame>& parts) {
   map_ids_to_source(run.out.ids, source);
   run.report["fan_split"] = {
       {"on", fan_split_}, {"polygons_split", polygons_split}, {"triangles_added", triangles_added}};
+  complete_dropped(run.report);
   return run;
 }
 

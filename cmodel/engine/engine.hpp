@@ -11,8 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/engine_options.hpp"
 #include "frame/screen_frame.hpp"
 #include "image/raster_image.hpp"
+#include "scene/scene.hpp"
 
 namespace cig {
 
@@ -36,20 +38,16 @@ struct EngineRun {
   nlohmann::ordered_json report;  // what the engine did and took, per stage
 };
 
-// The option spp=1|4|16|64... (samples per pixel, S x S with S = 2^t): t, for t = 0..max_side_log2
-// (InputError naming the engine and the values it takes).
-int samples_per_pixel_side_log2(const std::string& spp, int max_side_log2, const char* engine);
-
-// The option subpixel=B (the formatter grid at 1/2^B pixel): B, 0..kMaxSubpixelBits (InputError).
-constexpr int kMaxSubpixelBits = 8;
-int subpixel_bits_option(const std::string& value);
-
 class RasterEngine {
  public:
   virtual ~RasterEngine() = default;
   virtual const char* name() const = 0;
+  // What this engine can leave out of an image: the keys of its report's "dropped" (every one
+  // present, zeros included), with what each means (engine_options.hpp).
+  virtual const std::vector<DropKind>& drop_kinds() const;
   // Renders a frame: non-planar polygons split into fans first (unless the setting is off), ids
-  // mapped back to the input's polygons; the report counts the split ("fan_split").
+  // mapped back to the input's polygons; the report counts the split ("fan_split") and what the
+  // engine dropped ("dropped").
   EngineRun render(const ScreenFrame& frame);
   // Checks the engine's options (the formatter grid setting, then the engine's own) against a
   // raster size before any work (InputError).
@@ -61,6 +59,9 @@ class RasterEngine {
   // fields hold) and raster before any work, so that a command fails before its first output
   // (InputError).
   void check_frame(const ScreenFrame& frame) const;
+  // Checks a scene as a whole before any work (InputError): an engine that draws only some of a
+  // scene's objects refuses a scene with none of them, rather than a frame in the middle of a run.
+  virtual void check_scene(const Scene& /*scene*/) const {}
   void set_fan_split(bool on) { fan_split_ = on; }
   // The fixed engines format on the 12-bit grid of eq. 1; with a sub-pixel setting their input
   // is first snapped to the coarser grid it names (g = log2(raster) + B <= 12, else InputError).
@@ -86,6 +87,9 @@ class RasterEngine {
   virtual EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts);
 
  private:
+  // The report's "dropped" with every key of drop_kinds(), in their order (0 where the engine
+  // reported none), then any other key the engine put there.
+  void complete_dropped(nlohmann::ordered_json& report) const;
   // The frame as the formatter's grid setting leaves it (`frame` itself without a setting).
   const ScreenFrame& on_formatter_grid(const ScreenFrame& frame, ScreenFrame& snapped) const;
   void check_formatter_grid(int raster) const;  // InputError when the setting needs more than 12 bits

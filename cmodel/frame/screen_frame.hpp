@@ -75,6 +75,9 @@ struct ScreenFrame {
   // culling (empty for a polygon list and for objects that are not convex polyhedra).
   double tan_half_fov = 1;
   std::vector<EyePolyhedron> polyhedra;
+  // Whether stage B listed the scene's convex polyhedra here: true for every frame of a scene that
+  // has some, even one whose channel sees none of them; false for a polygon list.
+  bool lists_polyhedra = false;
 };
 
 ScreenFrame load_polygon_list(const std::string& file);

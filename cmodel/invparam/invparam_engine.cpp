@@ -211,30 +211,33 @@ ArrayTime array_time(const ScreenFrame& frame, int L) {
   return {invparam::covered_columns_clocks(full, L), invparam::covered_columns_clocks(covered, L)};
 }
 
+// The frame's polygons that are not drawn as a face of a polyhedron (EyeFace::pieces names those
+// that are): objects that are not convex polyhedra.
+long polygons_not_drawn(const ScreenFrame& frame) {
+  std::vector<char> on_face(frame.polygons.size(), 0);
+  for (const EyePolyhedron& p : frame.polyhedra)
+    for (const EyeFace& f : p.faces)
+      for (std::int32_t piece : f.pieces) on_face[std::size_t(piece)] = 1;
+  return long(std::count(on_face.begin(), on_face.end(), 0));
+}
+
 class InvparamEngine : public RasterEngine {
  public:
   InvparamEngine(const EngineOptions& o, bool twin) : twin_(twin), name_(twin ? "invparam-double" : "invparam") {
-    for (const auto& [key, value] : o.params) {
-      if (key == "bits" && !twin) {
-        bits_ = parse_bits(value);
-      } else if (key == "spp") {
-        side_log2_ = samples_per_pixel_side_log2(value, 3, name_);
-      } else if (key == "streaming") {
-        if (value != "full" && value != "covered")
-          throw InputError("", "--engine-opt", "streaming='" + value + "' is neither full nor covered");
-        covered_ = value == "covered";
-      } else if (key == "clock-ns") {
-        clock_ns_ = parse_clock_ns(value);
-      } else {
-        throw InputError(
-            "", "--engine-opt",
-            std::string("engine '") + name_ + "' takes no option '" + key + "' (it takes " +
-                (twin ? "" : "bits=" + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits) + ", ") +
-                "spp=1|4|16|64, streaming=full|covered, clock-ns=T)");
-      }
-    }
+    const EngineSettings s = parse_engine_options(name_, invparam_engine_options(twin), o.params);
+    if (!twin) bits_ = s.integer("bits");
+    side_log2_ = s.side_log2();
+    covered_ = s.is("streaming", "covered");
+    clock_ns_ = s.real("clock-ns");
   }
   const char* name() const override { return name_; }
+  const std::vector<DropKind>& drop_kinds() const override { return invparam_drop_kinds(); }
+  void check_scene(const Scene& scene) const override {
+    if (std::none_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) { return o.polyhedron; }))
+      throw InputError(scene.file, "objects",
+                       std::string("engine '") + name_ +
+                           "' draws convex polyhedra (objects with \"polyhedron\": true); this scene has none");
+  }
 
  protected:
   void check_engine_raster(int raster) const override {
@@ -245,9 +248,11 @@ class InvparamEngine : public RasterEngine {
                            std::to_string(raster << side_log2_) + " pixel processors a column; the array has " +
                            std::to_string(hls::kMaxSamplesPerColumn));
   }
+  // A frame of a scene with polyhedra is drawn even when its channel sees none (its polygons are
+  // then all counted as not drawn); a polygon list, which has none, is refused.
   void check_split_frame(const ScreenFrame& frame) const override {
     check_raster(frame.raster);
-    if (frame.polyhedra.empty() && !frame.polygons.empty())
+    if (frame.polyhedra.empty() && !frame.lists_polyhedra && !frame.polygons.empty())
       throw InputError("", "polygons",
                        std::string("engine '") + name_ +
                            "' draws convex polyhedra (scene objects with \"polyhedron\": "
@@ -273,23 +278,6 @@ class InvparamEngine : public RasterEngine {
   }
 
  private:
-  static double parse_clock_ns(const std::string& v) {
-    std::size_t used = 0;
-    double t = 0;
-    try {
-      t = std::stod(v, &used);
-    } catch (const std::exception&) { used = 0; }
-    if (used != v.size() || !(t > 0 && t <= 1e6))
-      throw InputError("", "--engine-opt", "clock-ns='" + v + "' is not a clock period in ns, > 0 and <= 1e6");
-    return t;
-  }
-  static int parse_bits(const std::string& v) {
-    for (int w = kMinWordBits; w <= kMaxWordBits; ++w)
-      if (v == std::to_string(w)) return w;
-    throw InputError("", "--engine-opt",
-                     "bits='" + v + "' is not " + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits) +
-                         " (the pixel processor's word length)");
-  }
   void report(const ScreenFrame& frame, const InvparamHits& h, long undrawn, double visibility_ms, double shade_ms,
               nlohmann::ordered_json& r) const {
     long faces = 0, hit = 0;
@@ -301,10 +289,12 @@ class InvparamEngine : public RasterEngine {
     r["objects"] = frame.polyhedra.size();
     r["faces"] = faces;
     r["samples_hit"] = hit;
-    r["samples_on_undrawn_faces"] = undrawn;
+    // Not drops (invparam_engine.hpp): faces drawn with clamped words, their visibility perhaps wrong.
     r["setup_values_saturated"] = h.saturated;
     r["faces_out_of_word_range"] = h.out_of_range;
-    r["light_points_not_drawn"] = frame.light_points.size();
+    r["dropped"] = {{"polygons_not_drawn", polygons_not_drawn(frame)},
+                    {"light_points_not_drawn", frame.light_points.size()},
+                    {"samples_on_undrawn_faces", undrawn}};
     const ArrayTime t = array_time(frame, h.size);
     r["array"] = {{"pixel_processors", h.size},
                   {"columns", h.size},
@@ -334,6 +324,31 @@ InvparamHits invparam_kernel_hits(const ScreenFrame& frame, const InvparamLattic
         "", "bits",
         std::to_string(bits) + " is not " + std::to_string(kMinWordBits) + ".." + std::to_string(kMaxWordBits));
   return kFixedHits[std::size_t(bits - kMinWordBits)](frame, lattice);
+}
+
+std::vector<EngineOptionSpec> invparam_engine_options(bool twin) {
+  std::vector<EngineOptionSpec> specs;
+  if (!twin)
+    specs.push_back(integer_option("bits", kMinWordBits, kMaxWordBits, "64", "the pixel processor's word length"));
+  specs.push_back(samples_per_pixel_option(3));
+  specs.push_back(choice_option("streaming", {"full", "covered"}, "full",
+                                "the array's object stream: to every column (the seed's) or to the columns an object "
+                                "spans (the report's hardware_ms)"));
+  specs.push_back(real_option("clock-ns", 0, 1e6, "3", "the array's clock period in ns (the seed's 3 ns)"));
+  return specs;
+}
+
+const std::vector<DropKind>& invparam_drop_kinds() {
+  using Cause = DropKind::Cause;
+  static const std::vector<DropKind> kinds{
+      {"polygons_not_drawn", Cause::kCannotDraw,
+       "polygon(s) not drawn: not a face of a convex polyhedron (stage F draws only objects with \"polyhedron\": "
+       "true)"},
+      {"light_points_not_drawn", Cause::kCannotDraw, "light point(s) not drawn (stage F draws no light points)"},
+      {"samples_on_undrawn_faces", Cause::kCannotDraw,
+       "sample(s) shown as background: their visible face was not drawn by the geometric processor (clipped away "
+       "or culled)"}};
+  return kinds;
 }
 
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin) {

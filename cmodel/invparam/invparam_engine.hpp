@@ -7,9 +7,16 @@
 // Fig. 1, a column at a time as the systolic array computes it. The sample's owner is the face as
 // drawn (EyeFace::polygon, so ids compare with the other engines'), shaded as the reference shades
 // that polygon (Gouraud I, screen-affine over the polygon's vertices; fog from the kernel's own
-// depth, Z = 1/tau), the pixel the box filter of its samples, its id the majority owner. Light
-// points and objects that are not polyhedra are not drawn (counted in the report); a frame with
-// polygons but no polyhedra (a polygon list) is refused.
+// depth, Z = 1/tau), the pixel the box filter of its samples, its id the majority owner.
+//
+// What it does not draw is counted in the report's "dropped" (invparam_drop_kinds) and warned of
+// by every command: the polygons of objects that are not convex polyhedra, every light point, and
+// samples whose visible face stage B did not draw (clipped away whole by the near plane, or
+// culled), which show the background. A polygon list (no polyhedra at all) and a scene without a
+// polyhedron are refused. Not drops: setup values saturated to the word and faces whose values
+// leave the word's range on the lattice (setup_values_saturated, faces_out_of_word_range in the
+// report) are still drawn, with clamped words; what that costs is a wrong visible face at some
+// samples, which `cig compare` and `cig wordlength` measure, as any short word's error.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +32,8 @@ constexpr int kMinWordBits = 24;
 constexpr int kMaxWordBits = 80;
 
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin);
+std::vector<EngineOptionSpec> invparam_engine_options(bool twin);  // the twin has no bits=
+const std::vector<DropKind>& invparam_drop_kinds();
 
 // The visibility of every sample of the L x L lattice, row-major (index j L + i: column i, row j).
 struct InvparamHits {

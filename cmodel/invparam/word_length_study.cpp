@@ -376,7 +376,7 @@ void check_word_length_options(const WordLengthOptions& o) {
                          " samples a side, not " + std::to_string(o.lattice));
 }
 
-WordLengthStudy run_word_length_study(const WordLengthOptions& o) {
+WordLengthStudy run_word_length_study(const WordLengthOptions& o, Progress* progress) {
   check_word_length_options(o);
   WordLengthStudy s;
   s.options = o;
@@ -397,6 +397,9 @@ WordLengthStudy run_word_length_study(const WordLengthOptions& o) {
       for (std::uint8_t u : truth.uncertain) s.uncertain += u;
       run_kernel(v, truth, o, s.rows[first]);
       run_depth_buffers(v, truth, o, buffers);
+      if (progress)
+        progress->step("range " + std::to_string(long(range)) + " m, view " + std::to_string(view + 1) + "/" +
+                       std::to_string(o.views));
     }
   }
   return s;

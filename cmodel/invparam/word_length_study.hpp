@@ -54,6 +54,7 @@
 #include <string>
 #include <vector>
 
+#include "common/progress.hpp"
 #include "frame/screen_frame.hpp"
 
 namespace cig {
@@ -110,6 +111,7 @@ ScreenFrame word_length_view(double range, int lattice, std::uint64_t seed, int 
 int word_length_bound_bits(double range, int lattice);
 // Checks the options (InputError naming the option).
 void check_word_length_options(const WordLengthOptions& o);
-WordLengthStudy run_word_length_study(const WordLengthOptions& o);
+// `progress` (optional) hears of every view done: ranges x views steps.
+WordLengthStudy run_word_length_study(const WordLengthOptions& o, Progress* progress = nullptr);
 
 }  // namespace cig

@@ -267,49 +267,43 @@ class QuadEngine : public RasterEngine {
 
 }  // namespace
 
+namespace {
+
+// The syntax of an architecture (the level count is checked per frame, against the raster).
+void check_architecture(const std::string& value) { quad::Architecture::parse(value, 0, "--arch"); }
+
+}  // namespace
+
+std::vector<EngineOptionSpec> quadtree_engine_options(bool twin) {
+  std::vector<EngineOptionSpec> specs{
+      syntax_option("arch", "eq. 1: np, 9p, 7p2t, 8s1p, ...", check_architecture, "np",
+                    "the raster processor's architecture, any of seed 004's eq. 1 (np: one PE per level)", "--arch"),
+      choice_option("masks", {"on", "off"}, "on", "multilevel priority masks", "--masks"),
+      choice_option("start", {"screen", "bbox"}, "screen",
+                    "where a polygon's subdivision starts: the whole screen (the seed's) or the smallest window "
+                    "holding its bounding box (same image, fewer child tests)",
+                    "--start-window")};
+  if (!twin)
+    specs.push_back(choice_option("format", {"coarse", "medium", "fine"}, "fine",
+                                  "the parameter formats, hls/quadtree/records.hpp"));
+  specs.push_back(integer_option("fifo", 1, 64, "2", "FIFO depth between stages"));
+  specs.push_back(real_option("clock", 0, 1e6, "100", "the clock in MHz the report converts cycles at"));
+  specs.push_back(samples_per_pixel_option(hls::kMaxSideLog2));
+  return specs;
+}
+
 std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin) {
   const char* engine = twin ? "quadtree-double" : "quadtree";
-  if (options.snap)
-    throw InputError("", "--snap",
-                     "--snap applies to the float engine; the quadtree engine's formatter snaps by itself");
+  const EngineSettings s = parse_engine_options(engine, quadtree_engine_options(twin), options.params);
   QuadOptions o;
   o.threads = std::max(1, options.threads);
-  for (const auto& [key, value] : options.params) {
-    if (key == "arch") {
-      quad::Architecture::parse(value, 0, "--arch");  // the syntax; the level count is checked per frame
-      o.arch = value;
-    } else if (key == "masks") {
-      if (value != "on" && value != "off") throw InputError("", "--masks", "must be on or off, not '" + value + "'");
-      o.masks = value == "on";
-    } else if (key == "start") {
-      if (value != "screen" && value != "bbox")
-        throw InputError("", "--start-window", "must be screen or bbox, not '" + value + "'");
-      o.start_window = value == "bbox";
-    } else if (key == "format" && !twin) {
-      if (value != "coarse" && value != "medium" && value != "fine")
-        throw InputError("", "--engine-opt", "format '" + value + "' is not one of coarse, medium, fine");
-      o.format = value;
-    } else if (key == "spp") {
-      o.side_log2 = samples_per_pixel_side_log2(value, hls::kMaxSideLog2, engine);
-    } else if (key == "fifo") {
-      char* end = nullptr;
-      const long v = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || v < 1 || v > 64)
-        throw InputError("", "--engine-opt", "fifo must be an integer 1..64");
-      o.fifo = int(v);
-    } else if (key == "clock") {
-      char* end = nullptr;
-      const double v = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0' || !(v > 0) || !(v < 1e6))
-        throw InputError("", "--engine-opt", "clock must be a frequency in MHz, > 0");
-      o.clock_mhz = v;
-    } else {
-      throw InputError("", "--engine-opt",
-                       std::string("engine '") + engine + "' takes no option '" + key +
-                           (twin ? "' (known: arch, masks, start, fifo, clock, spp)"
-                                 : "' (known: arch, masks, start, format, fifo, clock, spp)"));
-    }
-  }
+  o.arch = s.text("arch");
+  o.masks = s.is("masks", "on");
+  o.start_window = s.is("start", "bbox");
+  if (!twin) o.format = s.text("format");
+  o.fifo = s.integer("fifo");
+  o.clock_mhz = s.real("clock");
+  o.side_log2 = s.side_log2();
   if (twin) return std::make_unique<QuadEngine<QuadDoubleArith>>(o, engine, "double");
   if (o.format == "coarse")
     return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatCoarse>>>(o, engine,

@@ -1,23 +1,24 @@
 // `--engine quadtree` (and its double twin `quadtree-double`): the recursive-subdivision raster
 // processor of seed 004 (SPEC E): formatter -> setup -> the PEs of the chosen architecture, run
 // clock by clock by the architecture model (arch_model.hpp) -> pixel processor. Options
-// (--engine-opt KEY=VALUE, or the CLI's --arch and --masks):
-//   arch=STR        architecture of eq. 1 (architecture.hpp), default "np" (one PE per level)
-//   masks=on|off    multilevel priority masks, default on
-//   start=screen|bbox  where a polygon piece's subdivision starts: the whole screen (default, the
-//                   seed) or its start window, the smallest window holding its bounding box
-//                   (ArchConfig::start_window; same image, fewer cycles)
-//   format=coarse|medium|fine   parameter formats (hls/quadtree/records.hpp), default fine
-//   fifo=K          FIFO depth between stages, 1..64, default 2
-//   clock=MHZ       the clock the report converts cycles at, default 100
+// (--engine-opt KEY=VALUE, or the CLI's --arch, --masks and --start-window): the table of
+// quadtree_engine_options() (arch, masks, start, format, fifo, clock, spp).
+//
+// It drops nothing: its memories (the pixel frame, the priority masks) are sized by the raster,
+// every piece of every polygon is subdivided to the pixels it covers or to a mask that hides it,
+// and every light point is drawn by the light point unit. The report's pixels_full and
+// mask_words_full count pixels and mask words that filled up, which is how the masks hide what
+// lies behind, not a loss; pieces_hidden_by_masks are hidden, not dropped.
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "engine/engine.hpp"
 
 namespace cig {
 
 std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin);
+std::vector<EngineOptionSpec> quadtree_engine_options(bool twin);  // the twin has no format=
 
 }  // namespace cig

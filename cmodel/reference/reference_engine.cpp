@@ -12,19 +12,9 @@ namespace {
 class FloatEngine : public RasterEngine {
  public:
   explicit FloatEngine(const EngineOptions& o) : options_(o) {
-    for (const auto& [key, value] : o.params) {
-      if (key == "spp") {
-        side_ = 1 << samples_per_pixel_side_log2(value, kMaxReferenceSideLog2, "float");
-        continue;
-      }
-      if (key != "visibility")
-        throw InputError(
-            "", "--engine-opt",
-            "engine 'float' takes no option '" + key + "' (it takes visibility=depth|priority, spp=1|4|16|64|256)");
-      if (value != "depth" && value != "priority")
-        throw InputError("", "--engine-opt", "visibility='" + value + "' is neither depth nor priority");
-      visibility_ = value == "priority" ? Visibility::kPriority : Visibility::kDepth;
-    }
+    const EngineSettings s = parse_engine_options("float", reference_engine_options(), o.params);
+    side_ = 1 << s.side_log2();
+    visibility_ = s.is("visibility", "priority") ? Visibility::kPriority : Visibility::kDepth;
   }
   const char* name() const override { return "float"; }
 
@@ -81,6 +71,13 @@ class FloatEngine : public RasterEngine {
 };
 
 }  // namespace
+
+std::vector<EngineOptionSpec> reference_engine_options() {
+  return {choice_option("visibility", {"depth", "priority"}, "depth",
+                        "depth: a z-buffer; priority: each sample to the first polygon of the list that covers it, "
+                        "as the raster engines"),
+          samples_per_pixel_option(kMaxReferenceSideLog2)};
+}
 
 std::unique_ptr<RasterEngine> make_reference_engine(const EngineOptions& options) {
   return std::make_unique<FloatEngine>(options);

@@ -17,6 +17,7 @@
 #include "hls/segment/edge_generator.hpp"
 #include "hls/segment/frame_memory.hpp"
 #include "hls/segment/light_segments.hpp"
+#include "hls/segment/overload.hpp"
 #include "hls/segment/segment_generator.hpp"
 #include "hls/segment/span_piece_edges.hpp"
 #include "hls/segment/video_channel.hpp"
@@ -482,6 +483,7 @@ class SegmentEngine : public RasterEngine {
     pipeline_.set_threads(threads);
   }
   const char* name() const override { return name_; }
+  const std::vector<DropKind>& drop_kinds() const override { return segment_drop_kinds(); }
   void check_engine_raster(int raster) const override {
     ScreenFrame f;
     f.raster = raster;
@@ -527,36 +529,39 @@ class SegmentEngine : public RasterEngine {
 
 }  // namespace
 
+std::vector<EngineOptionSpec> segment_engine_options(bool twin) {
+  std::vector<EngineOptionSpec> specs;
+  if (!twin)
+    specs.push_back(choice_option("format", {"coarse", "medium", "fine"}, "fine",
+                                  "the kernels' word formats, hls/segment/segment_arith.hpp"));
+  specs.push_back(choice_option("x-rows", {"4", "2"}, "4",
+                                "X at every sample row (4) or the seed's four-X segment (2: X at two rows)"));
+  specs.push_back(
+      choice_option("interp", {"plane", "seed"}, "plane",
+                    "plane: perspective-correct planes of I and 1/Z; seed: eq. 3-4's I and Z at the segment "
+                    "ends"));
+  specs.push_back(samples_per_pixel_option(hls::kMaxSideLog2));
+  return specs;
+}
+
+const std::vector<DropKind>& segment_drop_kinds() {
+  using Cause = DropKind::Cause;
+  static const std::vector<DropKind> kinds{
+      {"polygons_overload", Cause::kMemoryFull,
+       "polygon(s) dropped by the overload threshold (the segment memory holds " +
+           std::to_string(hls::kSegmentBankWords) + " segments a field)"},
+      {"polygons_frame_memory_full", Cause::kMemoryFull,
+       "polygon(s) did not fit the frame memory (" + std::to_string(hls::kFrameBankWords) + " words a bank)"},
+      {"segments_segment_memory_full", Cause::kMemoryFull, "segment(s) did not fit the segment memory"}};
+  return kinds;
+}
+
 std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, bool twin) {
-  if (options.snap)
-    throw InputError("", "--snap",
-                     "--snap applies to the float engine; the segment engine's formatter snaps by itself");
-  std::string format = "fine";
-  bool quad = false, seed_interp = false;
-  int side_log2 = hls::kDefaultSideLog2;
   const char* engine = twin ? "segment-double" : "segment";
-  for (const auto& [key, value] : options.params) {
-    if (key == "format" && !twin) {
-      format = value;
-    } else if (key == "x-rows") {
-      if (value != "4" && value != "2")
-        throw InputError("", "--engine-opt",
-                         "x-rows must be 4 (X at every sample row) or 2 (the seed's four-X segment)");
-      quad = value == "2";
-    } else if (key == "spp") {
-      side_log2 = samples_per_pixel_side_log2(value, hls::kMaxSideLog2, engine);
-    } else if (key == "interp") {
-      if (value != "plane" && value != "seed")
-        throw InputError("", "--engine-opt",
-                         "interp must be plane (perspective-correct planes of I and 1/Z) or seed (eq. 3-4 at the "
-                         "segment ends)");
-      seed_interp = value == "seed";
-    } else {
-      throw InputError("", "--engine-opt",
-                       std::string("engine '") + engine + "' takes no option '" + key +
-                           (twin ? "' (known: x-rows, interp, spp)" : "' (known: format, x-rows, interp, spp)"));
-    }
-  }
+  const EngineSettings s = parse_engine_options(engine, segment_engine_options(twin), options.params);
+  const std::string format = twin ? "double" : s.text("format");
+  const bool quad = s.is("x-rows", "2"), seed_interp = s.is("interp", "seed");
+  const int side_log2 = s.side_log2();
   if (twin)
     return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp, side_log2,
                                                                options.threads);
@@ -569,7 +574,7 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
   if (format == "fine")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
         engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2, options.threads);
-  throw InputError("", "--engine-opt", "format '" + format + "' is not one of coarse, medium, fine");
+  throw std::logic_error("segment format " + format + " has no table row");
 }
 
 }  // namespace cig

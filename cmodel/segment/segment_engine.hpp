@@ -6,12 +6,22 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "engine/engine.hpp"
 
 namespace cig {
 
-// Options (--engine-opt): format=coarse|medium|fine (default fine; ignored by the twin).
+// Options (--engine-opt): segment_engine_options() (the twin has no format=).
 std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, bool twin);
+std::vector<EngineOptionSpec> segment_engine_options(bool twin);
+// What a full memory loses (the report's "dropped"): polygons_overload, polygons_frame_memory_full,
+// segments_segment_memory_full (a light's segments included). Nothing else is left out: the
+// overload threshold never drops a light point (its segments count with the protected polygons'
+// before the threshold is chosen), a light's chords fit its kMaxLightSegments on every lattice the
+// engine takes (at most 4096 samples a side: rows 1 grid unit apart, a disc of 7 units), and a
+// polygon no sample row crosses after snapping covers no sample, so leaving it out loses nothing
+// (the report's polygons_degenerate counts them).
+const std::vector<DropKind>& segment_drop_kinds();
 
 }  // namespace cig

@@ -67,6 +67,25 @@ TEST(Progress, ATerminalLineIsRewrittenInPlaceAndEnded) {
   EXPECT_NE(s.find("cig test: 2/2 b"), std::string::npos) << s;
 }
 
+// A warning between progress lines gets a line of its own: on a terminal the open line is cleared
+// first, so the warning does not run on after it.
+TEST(Progress, ANoteTakesALineOfItsOwn) {
+  std::ostringstream os;
+  Progress::Style style{true};
+  style.first_after_s = 0;
+  style.terminal_interval_s = 0;
+  {
+    Progress p("cig test", 2, os, style);
+    p.step("a");
+    p.note("cig: warning: frame 0: lost\n");
+    p.note("");  // nothing to say: nothing printed
+    p.step("b");
+  }
+  const std::string s = os.str();
+  EXPECT_NE(s.find("\x1b[K\r\x1b[Kcig: warning: frame 0: lost\n\rcig test: 2/2 b"), std::string::npos) << s;
+  EXPECT_EQ(count_lines(s), 2) << s;
+}
+
 TEST(Provenance, VersionCommitCommandLineAndDate) {
   const char* argv[] = {"build/bin/cig", "render", "scenes/a b.json", "--engine-opt", "x='1'"};
   record_command_line(5, argv);
