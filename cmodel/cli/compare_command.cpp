@@ -9,10 +9,12 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "cli/compare_command.hpp"
 #include "cli/frame_jobs.hpp"
+#include "cli/output_plan.hpp"
 #include "image/image_compare.hpp"
 #include "registry/engine_registry.hpp"
 
@@ -47,6 +49,16 @@ void print_row(const Comparison& r) {
 
 namespace {
 
+// The difference images --out receives, one per image (compare_all writes them).
+std::string difference_name(int frame, int channel) {
+  return frame_name(frame) + "_ch" + std::to_string(channel) + "_diff.png";
+}
+std::set<std::string> difference_names(const FrameJobs& jobs) {
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < jobs.size(); ++k) names.insert(difference_name(jobs.frame(k), jobs.channel(k)));
+  return names;
+}
+
 // Renders every image with the engine and the reference on all cores; one Comparison per image.
 std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jobs, const EngineOptions& eo,
                                     const EngineOptions& ro, bool classify) {
@@ -77,9 +89,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
         if (classify && rows[k].error.sum_squared > 0)
           attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
         if (!c.out_dir.empty())
-          write_png((std::filesystem::path(c.out_dir) /
-                     (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) + "_diff.png"))
-                        .string(),
+          write_png((std::filesystem::path(c.out_dir) / difference_name(jobs.frame(k), jobs.channel(k))).string(),
                     difference_image(got.out.image, want.out.image, 8));
         if (jobs.size() > 3) {
           std::lock_guard<std::mutex> lock(mutex);
@@ -151,8 +161,11 @@ int CompareCommand::run() {
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   jobs.check_capacity(*make_engine(engine.engine, eo));
-  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  if (!out_dir.empty()) plan.folder(out_dir, "--out", difference_names(jobs));
+  plan.file(report_file, "--report");
+  plan.check();
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference
   const std::vector<Comparison> rows = compare_all(*this, jobs, eo, ro, classify);

@@ -26,6 +26,7 @@
 
 #include "cli/frame_jobs.hpp"
 #include "cli/gnuplot_plot.hpp"
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "registry/engine_registry.hpp"
@@ -264,7 +265,11 @@ int SweepCommand::run() {
       jobs.check_capacity(*engines[v]);
     } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
   }
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  plan.file(report_file, "--report");
+  plan.file(plot_file, "--plot");
+  plan.check();
   check_plot_output(plot_file, "--plot");
   std::vector<SweepRow> rows = measure(jobs, combos, ro, engines, repeat);
   mark_pareto(rows);
