@@ -164,7 +164,7 @@ int CompareCommand::run() {
   OutputPlan plan;
   jobs.declare_inputs(plan);
   if (!out_dir.empty()) plan.folder(out_dir, "--out", difference_names(jobs));
-  plan.file(report_file, "--report");
+  if (!report_file.empty()) plan.file(report_file, "--report");
   plan.check();
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference

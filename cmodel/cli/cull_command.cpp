@@ -82,7 +82,7 @@ int CullCommand::run() {
   frame_range(frames_text, frame_k, frame_opt->count() > 0, scene.frame_count(), scene_file, a, b);
   OutputPlan plan;
   plan.scene_inputs(scene);
-  plan.file(report_file, "--report");
+  if (!report_file.empty()) plan.file(report_file, "--report");
   plan.check();
   if (!(near_distance <= far_distance)) throw InputError("", "--near", "D_near must not exceed D_far");
   const WorldDatabase db = build_world_database(scene);

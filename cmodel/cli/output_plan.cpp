@@ -54,7 +54,7 @@ void OutputPlan::scene_inputs(const Scene& scene) {
 }
 
 void OutputPlan::file(const std::string& path, const std::string& option) {
-  if (!path.empty()) files_.push_back({path, option, resolve(path), {}});
+  files_.push_back({path, option, resolve(path), {}});
 }
 
 void OutputPlan::folder(const std::string& path, const std::string& option, std::set<std::string> names) {
@@ -78,6 +78,7 @@ void OutputPlan::check_folder(const Entry& f) const {
 
 void OutputPlan::check_file(std::size_t k) const {
   const Entry& e = files_[k];
+  if (e.path.empty()) check_output_file(e.path, e.label.c_str());  // "the output path is empty"
   for (const Entry& in : inputs_)
     if (same(e.resolved, in.resolved))
       throw InputError("", e.label,

@@ -21,7 +21,7 @@ class OutputPlan {
   void input(const std::string& path, const std::string& what);
   // The scene file and every OBJ model it references.
   void scene_inputs(const Scene& scene);
-  // A file the run writes, named by `option`; "" (the option not given) declares nothing.
+  // A file the run writes, named by `option` (callers skip an optional output not given).
   void file(const std::string& path, const std::string& option);
   // A folder the run writes into, named by `option`, and the names of the files it writes there
   // (those known before the work: the images of each frame and channel).

@@ -27,8 +27,8 @@ int RasterCommand::run() {
   OutputPlan plan;
   plan.input(polys_file, "the polygon list this run reads");
   plan.file(out_file, "--out");
-  plan.file(ids_file, "--ids");
-  plan.file(report_file, "--report");
+  if (!ids_file.empty()) plan.file(ids_file, "--ids");
+  if (!report_file.empty()) plan.file(report_file, "--report");
   plan.check();
   const auto t0 = Clock::now();
   EngineRun run = eng->render(frame);

@@ -267,8 +267,8 @@ int SweepCommand::run() {
   }
   OutputPlan plan;
   jobs.declare_inputs(plan);
-  plan.file(report_file, "--report");
-  plan.file(plot_file, "--plot");
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!plot_file.empty()) plan.file(plot_file, "--plot");
   plan.check();
   check_plot_output(plot_file, "--plot");
   std::vector<SweepRow> rows = measure(jobs, combos, ro, engines, repeat);

@@ -224,8 +224,8 @@ int WordLengthCommand::run() {
   o.seed = seed;
   check_word_length_options(o);
   OutputPlan plan;
-  plan.file(report_file, "--report");
-  plan.file(plot_file, "--plot");
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!plot_file.empty()) plan.file(plot_file, "--plot");
   plan.check();
   check_plot_output(plot_file, "--plot");
   const WordLengthStudy s = run_word_length_study(o);

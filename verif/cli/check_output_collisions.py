@@ -14,7 +14,8 @@ import shutil
 import subprocess
 import sys
 
-# name: (command line, run in WORK; the text stderr must contain). SRC stands for the source tree.
+# name: (command line, run in WORK; the text stderr must contain). SRC stands for the source tree,
+# '' for an empty argument.
 CASES = {
     # render: the report on --out's folder (the case), on the scene, on an OBJ model the
     # scene references, on an image --out receives; --out on the scene, on a file; an input among
@@ -50,6 +51,8 @@ CASES = {
                            "--out: 'hut.json' is the scene file this run reads"),
     "polys_out_is_folder": ("polys hut.json --frame 0 --channel 0 --out sub", "--out: 'sub' is a folder, not a file"),
     "stress_out_is_folder": ("stress slivers --out sub", "--out: 'sub' is a folder, not a file"),
+    "raster_out_empty": ("raster overlap.polys.json --out ''", "--out: the output path is empty"),
+    "render_out_empty": ("render hut.json --out ''", "--out: the output folder is empty"),
     "cull_report_is_scene": ("cull hut.json --report hut.json", "--report: 'hut.json' is the scene file this run reads"),
     # compare, sweep
     "compare_report_is_out": ("compare hut.json --engine segment --out D --report D",
@@ -129,7 +132,7 @@ def main():
     source = os.path.realpath(source)
     prepare(source, work)
     before, scenes_before = snapshot(work), snapshot(os.path.join(source, "scenes"))
-    args = [cig] + [a.replace("SRC", source) for a in cmdline.split()]
+    args = [cig] + ["" if a == "''" else a.replace("SRC", source) for a in cmdline.split()]
     r = subprocess.run(args, cwd=work, capture_output=True, text=True)
     if r.returncode != 2:
         fail(f"{cmdline}: exit {r.returncode}, expected 2\nstdout: {r.stdout}\nstderr: {r.stderr}")

@@ -79,8 +79,8 @@ int CosimCommand::run_quadtree() {
                          (have.empty() ? " (it has none for that raster)" : " (it has: " + have + ")"));
   OutputPlan plan;
   jobs.declare_inputs(plan);
-  plan.file(report_file, "--report");
-  plan.file(trace_file, "--trace");
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!trace_file.empty()) plan.file(trace_file, "--trace");
   plan.check();
   auto rtl = cosim::make_rtl_runner(cfg.raster_log2, cfg.tree_levels);
   if (!trace_file.empty()) {

@@ -60,8 +60,8 @@ int CosimCommand::run_invparam() {
   const std::vector<ScreenFrame> frames = invparam_frames(jobs, input);
   OutputPlan plan;
   jobs.declare_inputs(plan);
-  plan.file(report_file, "--report");
-  plan.file(trace_file, "--trace");
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!trace_file.empty()) plan.file(trace_file, "--trace");
   plan.check();
   auto rtl = cosim::make_ip_rtl(cfg.w, cfg.n_pp);
   if (!trace_file.empty()) {
