@@ -240,13 +240,11 @@ $(echo "$headers" | sed 's/^/- `/; s/$/`/')
 EOF
 }
 
-# TOP's bundle into the folder $1: staged in a temporary folder, then installed (of_install).
-export_top() {
-  local dest=$1 f
+# TOP's bundle, staged in $stage_root/TOP (nothing is written to OUTDIR yet).
+stage_top() {
+  local f
   vectors=$repo/verif/golden/hls/$top.vec
-  tmp=$(mktemp -d)
-  of_cleanup+=("$tmp")
-  staging=$tmp/$top
+  staging=$stage_root/$top
   mkdir -p "$staging/src" "$staging/tb" "$staging/vectors"
   for f in $(dependencies); do
     f=$(realpath "$f")
@@ -260,24 +258,37 @@ export_top() {
   cp "$vectors" "$staging/vectors/"
 
   # The port table (the testbench prints it) for the README.
-  g++ -std=c++17 -O1 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$tmp/tb"
-  ports=$("$tmp/tb" --ports)
+  g++ -std=c++17 -O1 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
+  ports=$("$stage_root/tb_$top" --ports)
+  rm -f "$stage_root/tb_$top"
   headers=$(cd "$staging" && find hls -name '*.hpp' | sort)
   write_vitis
   write_catapult
   write_readme
-
-  of_install "$staging" "$dest" "$marker" "$(marker_header "$top")"
-  echo "$dest: $top ($(echo "$headers" | wc -l) kernel headers, $(grep -c '^>' "$vectors") vectors)"
 }
 
+# Every bundle is staged and checked against its folder before the first file is written there.
+stage_root=$(mktemp -d)
+of_cleanup+=("$stage_root")
 if [ "$top" = all ]; then
-  # OUTDIR's own marker first (it holds no file of its own), so that an interrupted run can be
-  # repeated; then one bundle per top.
-  empty=$(mktemp -d)
-  of_cleanup+=("$empty")
-  of_install "$empty" "$out" "$marker" "$(marker_header all "$(tops | sed 's/^/bundle /')")"
-  for top in $(tops); do export_top "$out/$top"; done
+  selected=$(tops)
+  mkdir "$stage_root/.outdir"  # OUTDIR itself holds no file of its own, only its marker
+  folder_of() { echo "$out/$1"; }
 else
-  export_top "$out"
+  selected=$top
+  folder_of() { echo "$out"; }
 fi
+for top in $selected; do
+  stage_top
+  of_check_install "$stage_root/$top" "$(folder_of "$top")" "$marker"
+done
+
+if [ -d "$stage_root/.outdir" ]; then
+  # OUTDIR's marker first, so that an interrupted run can be repeated; then one bundle per top.
+  of_install "$stage_root/.outdir" "$out" "$marker" "$(marker_header all "$(tops | sed 's/^/bundle /')")"
+fi
+for top in $selected; do
+  of_install "$stage_root/$top" "$(folder_of "$top")" "$marker" "$(marker_header "$top")"
+  headers=$(cd "$stage_root/$top" && find hls -name '*.hpp' | wc -l)
+  echo "$(folder_of "$top"): $top ($headers kernel headers, $(grep -c '^>' "$repo/verif/golden/hls/$top.vec") vectors)"
+done

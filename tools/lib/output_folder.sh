@@ -10,6 +10,8 @@
 #   of_check_written OUT MARKER REPO FILE...
 #                                      each FILE that exists in OUT is listed in OUT's MARKER, or
 #                                      OUT lies in a build folder of REPO (generated files only).
+#   of_check_install STAGING OUT MARKER
+#                                      of_install's checks alone (run them all before any write).
 #   of_install STAGING OUT MARKER HEADER
 #                                      moves STAGING's files into OUT: the files of OUT's old
 #                                      manifest are replaced or removed, every other file stays.
@@ -161,12 +163,13 @@ of_write_marker() {
   mv -f -- "$tmp" "$dir/$marker"
 }
 
-of_install() {
-  local staging=$1 out=$2 marker=$3 header=$4 dest old new path incoming
+# The checks of of_install, to run for every folder before anything is written: a file STAGING
+# brings that exists in OUT but is not in its manifest, or a path leading out of OUT, is refused.
+of_check_install() {
+  local staging=$1 out=$2 marker=$3 dest old new path
   dest=$(of_resolve "$out")
   old=$(of_manifest "$dest" "$marker" | sort -u)
   new=$(cd "$staging" && find . -type f | sed 's|^\./||' | sort)
-  # A file the new bundle brings that is there already but was not written here before: refused.
   for path in $new; do
     if { [ -e "$dest/$path" ] || [ -L "$dest/$path" ]; } && ! grep -qxF -- "$path" <<<"$old"; then
       of_fail "$dest/$path: exists and is not part of what this script wrote there before; move it away or" \
@@ -177,6 +180,14 @@ of_install() {
     fi
   done
   printf '%s\n' "$old" "$new" | of_check_inside "$dest"
+}
+
+of_install() {
+  local staging=$1 out=$2 marker=$3 header=$4 dest old new path incoming
+  of_check_install "$staging" "$out" "$marker"
+  dest=$(of_resolve "$out")
+  old=$(of_manifest "$dest" "$marker" | sort -u)
+  new=$(cd "$staging" && find . -type f | sed 's|^\./||' | sort)
   mkdir -p -- "$dest"
   # The new files first go next to the old ones (same file system), so that a failure while they
   # are copied leaves the old bundle whole; then each is moved in (a rename).

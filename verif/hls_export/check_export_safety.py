@@ -174,6 +174,42 @@ def case_twice(export, repo, work):
     print("twice: user files kept, the stale file removed, an unlisted file refused")
 
 
+def snapshot(folder):
+    found = {}
+    for root, _, names in os.walk(folder):
+        for n in names:
+            path = os.path.join(root, n)
+            found[os.path.relpath(path, folder)] = read(path)
+    return found
+
+
+def case_all(export, repo, work):
+    out = os.path.join(work, "bundles")
+    r = run([export, "all", out])
+    if r.returncode != 0:
+        fail(f"all: exit {r.returncode}: {r.stderr}")
+    with open(os.path.join(out, ".cig-hls-bundle")) as f:
+        outer = f.read().splitlines()
+    tops = sorted(line[7:] for line in outer if line.startswith("bundle "))
+    if outer[:2] != ["cig-hls-bundle 1", "top all"] or TOP not in tops or any(line.startswith("file ") for line in outer):
+        fail(f"OUTDIR's marker: {outer}")
+    for t in tops:
+        with open(os.path.join(out, t, ".cig-hls-bundle")) as f:
+            if f"top {t}" not in f.read().splitlines():
+                fail(f"{t}'s marker does not name it")
+    write(os.path.join(out, "notes.txt"), "mine\n")
+    marker = os.path.join(out, TOP, ".cig-hls-bundle")
+    with open(marker) as f:
+        text = f.read()
+    with open(marker, "w") as f:
+        f.write(text.replace("file README.md\n", ""))
+    before = snapshot(out)
+    expect_refused(run([export, "all", out]), os.path.join(out, TOP, "README.md") + ": exists and is not part of")
+    if snapshot(out) != before or any(n.startswith(".cig-incoming") for n in os.listdir(out)):
+        fail("the refused run changed OUTDIR")
+    print(f"all: {len(tops)} bundles, each marked; a refused second run changed nothing")
+
+
 def main():
     export, repo, work, case = sys.argv[1:5]
     repo, work = os.path.realpath(repo), os.path.realpath(work)
@@ -182,7 +218,8 @@ def main():
     shutil.rmtree(work, ignore_errors=True)  # this test's own scratch folder
     os.makedirs(work)
     cases = {"help": case_help, "not_empty": case_not_empty, "repo_root": case_repo_root,
-             "repo_parent": case_repo_parent, "home": case_home, "file": case_file, "twice": case_twice}
+             "repo_parent": case_repo_parent, "home": case_home, "file": case_file, "twice": case_twice,
+             "all": case_all}
     if case not in cases:
         fail("unknown case " + case)
     cases[case](export, repo, work)
