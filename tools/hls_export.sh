@@ -29,8 +29,9 @@ set -euo pipefail
 repo=$(realpath "$(dirname "$0")/..")
 tb_dir=$repo/verif/hls_export/tb
 marker=.cig-hls-bundle
+# shellcheck disable=SC2034  # read by tools/lib/output_folder.sh
 of_prog=tools/hls_export.sh
-# shellcheck source=lib/output_folder.sh
+# shellcheck source-path=SCRIPTDIR source=lib/output_folder.sh
 source "$repo/tools/lib/output_folder.sh"
 tops() { ls "$repo/verif/hls_export/syn" | sed -n 's/\.cpp$//p'; }
 

@@ -32,8 +32,9 @@
 # it, $HOME and its parents, an existing non-folder (tools/lib/output_folder.sh).
 set -euo pipefail
 root=$(realpath "$(dirname "$0")/..")
+# shellcheck disable=SC2034  # read by tools/lib/output_folder.sh
 of_prog=synth_report
-# shellcheck source=lib/output_folder.sh
+# shellcheck source-path=SCRIPTDIR source=lib/output_folder.sh
 source "$root/tools/lib/output_folder.sh"
 out=${1:-$root/build-rtl/synth}
 shift || true

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the tools that write into a folder the user names (tools/hls_export.sh,
 # tools/synth_report.sh), so that they never delete or overwrite what they did not write:
 #   of_check_place OUT REPO [build]    refuses (exit 2) a place no tool may write to: an existing
@@ -19,6 +20,7 @@
 # "NAME 1" (NAME: the marker's file name without its dot), then "key value" lines, and one
 # "file PATH" line per file written (paths relative to the folder).
 
+of_prog=${of_prog:-$(basename -- "$0")}
 of_cleanup=()
 of_run_cleanup() {
   local p
@@ -158,6 +160,7 @@ of_write_marker() {
   chmod "$(printf '%o' $((0666 & ~0$(umask))))" "$tmp"  # as any file written (mktemp makes it private)
   {
     printf '%s\n' "$header"
+    # shellcheck disable=SC2086  # one path a word (paths hold no blanks: of_manifest)
     [ -z "$list" ] || printf 'file %s\n' $list
   } >"$tmp"
   mv -f -- "$tmp" "$dir/$marker"
