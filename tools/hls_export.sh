@@ -16,34 +16,80 @@
 #   g++ -std=c++17 -I. tb/tb_TOP.cpp src/TOP.cpp -o tb && ./tb              (native types)
 #   g++ -std=c++17 -DCIG_HLS_SYSTEMC -I. tb/tb_TOP.cpp src/TOP.cpp -lsystemc -o tb && ./tb
 # and exits 0 when every vector matches, 1 on a difference, 2 on a missing or malformed vector file.
+#
+# OUTDIR is new, empty, or a folder this script wrote before: every folder it writes holds a marker,
+# .cig-hls-bundle (the top, the cig version and commit, and the manifest of the files written), and
+# a later export replaces or removes only the files of that manifest; anything else there (a
+# user's notes) stays. The new bundle is copied next to the old one and then moved in, so that a
+# failure while copying leaves the old bundle whole. Refused (exit 2) before anything is written: a
+# non-empty folder without the marker, an existing non-folder, the source tree, a parent of it,
+# $HOME and its parents (symlinks and .. resolved first).
 set -euo pipefail
 
-usage() {
-  echo "usage: tools/hls_export.sh TOP|all OUTDIR   (TOP: $(tops | tr '\n' ' '))" >&2
-  exit 2
-}
-repo=$(cd "$(dirname "$0")/.." && pwd)
+repo=$(realpath "$(dirname "$0")/..")
 tb_dir=$repo/verif/hls_export/tb
+marker=.cig-hls-bundle
+# shellcheck disable=SC2034  # read by tools/lib/output_folder.sh
+of_prog=tools/hls_export.sh
+# shellcheck source-path=SCRIPTDIR source=lib/output_folder.sh
+source "$repo/tools/lib/output_folder.sh"
 tops() { ls "$repo/verif/hls_export/syn" | sed -n 's/\.cpp$//p'; }
 
-[ $# -eq 2 ] || usage
+usage() {
+  cat <<EOF
+usage: tools/hls_export.sh TOP|all OUTDIR
+Writes the HLS hand-off bundle of TOP into OUTDIR, or with "all" every top's into OUTDIR/TOP.
+OUTDIR must be new, empty, or a folder this script wrote before (it holds $marker): there it
+replaces or removes only the files it wrote, and leaves every other file in place. Never the
+source tree, a parent of it, \$HOME or a parent of it.
+TOP: $(tops | tr '\n' ' ')
+EOF
+}
+for arg in "$@"; do
+  case $arg in -h | --help) usage; exit 0 ;; esac
+done
+if [ $# -ne 2 ] || [ -z "$2" ]; then
+  usage >&2
+  exit 2
+fi
 top=$1
 out=$2
-[ -n "$out" ] || usage
-if [ "$top" = all ]; then
-  for t in $(tops); do "$0" "$t" "$out/$t"; done
-  exit 0
-fi
-if ! tops | grep -qx "$top"; then
+if [ "$top" != all ] && ! tops | grep -qx -- "$top"; then
   echo "tools/hls_export.sh: '$top' is not a kernel top" >&2
-  usage
+  usage >&2
+  exit 2
 fi
-case $(cd "$(dirname "$out")" 2>/dev/null && pwd)/ in
-  "$repo"/*) echo "tools/hls_export.sh: $out: write the bundle outside the source tree" >&2; exit 2 ;;
-esac
-vectors=$repo/verif/golden/hls/$top.vec
-[ -f "$vectors" ] || { echo "tools/hls_export.sh: $vectors: no golden vectors" >&2; exit 2; }
 command -v g++ >/dev/null || { echo "tools/hls_export.sh: needs g++ (apt-get install g++)" >&2; exit 2; }
+
+# Every check before anything is written: the place, the folder's owner, each top's folder and
+# vectors.
+check_bundle_folder() {  # folder top
+  of_check_place "$1" "$repo"
+  of_check_claim "$1" "$marker"
+  local real
+  real=$(of_resolve "$1")
+  if of_has_marker "$real" "$marker" && [ "$(of_marker_value "$real" "$marker" top)" = all ]; then
+    of_fail "$(of_shown "$1"): holds the bundles of every top (tools/hls_export.sh all); export $2 into" \
+      "$1/$2, or into a new or empty folder"
+  fi
+  [ -f "$repo/verif/golden/hls/$2.vec" ] || of_fail "$repo/verif/golden/hls/$2.vec: no golden vectors"
+}
+if [ "$top" = all ]; then
+  of_check_place "$out" "$repo"
+  of_check_claim "$out" "$marker"
+  for t in $(tops); do check_bundle_folder "$out/$t" "$t"; done
+else
+  check_bundle_folder "$out" "$top"
+fi
+
+version=$(sed -n 's/^project(cig VERSION \([0-9.]*\).*/\1/p' "$repo/CMakeLists.txt")
+commit=$(git -C "$repo" rev-parse HEAD 2>/dev/null) || commit=unknown
+if [ "$commit" != unknown ] && ! git -C "$repo" diff --quiet HEAD -- 2>/dev/null; then commit=$commit-dirty; fi
+marker_header() {  # top [extra lines]
+  printf '%s\n' "${marker#.} 1" "top $1" "version $version" "commit $commit" "date $(date -u +%Y-%m-%dT%H:%M:%SZ)" \
+    "written_by tools/hls_export.sh"
+  [ $# -lt 2 ] || printf '%s\n' "$2"
+}
 
 # Every file of the tree the testbench and the synthesis top include, in both configurations.
 dependencies() {
@@ -155,6 +201,8 @@ Written by \`tools/hls_export.sh $top OUTDIR\` from the cig source tree. Self-co
 kernel's headers (\`hls/\`: C++17, the HLS subset, no dynamic memory, no floating point), its
 synthesis top (\`src/$top.cpp\`: \`$top\` at global scope, the name \`set_top\` takes), a C
 testbench (\`tb/\`) and $count golden vectors (\`vectors/$top.vec\`) written by the C model.
+\`.cig-hls-bundle\` lists the files the script wrote: a later export into this folder replaces or
+removes only those, and leaves any other file (your notes) in place.
 
 ## Ports
 
@@ -193,30 +241,55 @@ $(echo "$headers" | sed 's/^/- `/; s/$/`/')
 EOF
 }
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-staging=$tmp/$top
-mkdir -p "$staging/src" "$staging/tb" "$staging/vectors"
-for f in $(dependencies); do
-  f=$(realpath "$f")
-  case $f in
-    "$repo"/hls/*) mkdir -p "$staging/$(dirname "${f#$repo/}")"; cp "$f" "$staging/${f#$repo/}" ;;
-    "$tb_dir"/*) cp "$f" "$staging/tb/" ;;
-    "$repo"/verif/hls_export/syn/*) cp "$f" "$staging/src/" ;;
-    *) echo "tools/hls_export.sh: $f: a dependency outside hls/ and the testbench" >&2; exit 2 ;;
-  esac
+# TOP's bundle, staged in $stage_root/TOP (nothing is written to OUTDIR yet).
+stage_top() {
+  local f
+  vectors=$repo/verif/golden/hls/$top.vec
+  staging=$stage_root/$top
+  mkdir -p "$staging/src" "$staging/tb" "$staging/vectors"
+  for f in $(dependencies); do
+    f=$(realpath "$f")
+    case $f in
+      "$repo"/hls/*) mkdir -p "$staging/$(dirname "${f#$repo/}")"; cp "$f" "$staging/${f#$repo/}" ;;
+      "$tb_dir"/*) cp "$f" "$staging/tb/" ;;
+      "$repo"/verif/hls_export/syn/*) cp "$f" "$staging/src/" ;;
+      *) echo "tools/hls_export.sh: $f: a dependency outside hls/ and the testbench" >&2; exit 2 ;;
+    esac
+  done
+  cp "$vectors" "$staging/vectors/"
+
+  # The port table (the testbench prints it) for the README.
+  g++ -std=c++17 -O1 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
+  ports=$("$stage_root/tb_$top" --ports)
+  rm -f "$stage_root/tb_$top"
+  headers=$(cd "$staging" && find hls -name '*.hpp' | sort)
+  write_vitis
+  write_catapult
+  write_readme
+}
+
+# Every bundle is staged and checked against its folder before the first file is written there.
+stage_root=$(mktemp -d)
+of_cleanup+=("$stage_root")
+if [ "$top" = all ]; then
+  selected=$(tops)
+  mkdir "$stage_root/.outdir"  # OUTDIR itself holds no file of its own, only its marker
+  folder_of() { echo "$out/$1"; }
+else
+  selected=$top
+  folder_of() { echo "$out"; }
+fi
+for top in $selected; do
+  stage_top
+  of_check_install "$stage_root/$top" "$(folder_of "$top")" "$marker"
 done
-cp "$vectors" "$staging/vectors/"
 
-# The port table (the testbench prints it) for the README.
-g++ -std=c++17 -O1 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$tmp/tb"
-ports=$("$tmp/tb" --ports)
-headers=$(cd "$staging" && find hls -name '*.hpp' | sort)
-write_vitis
-write_catapult
-write_readme
-
-rm -rf "$out"
-mkdir -p "$(dirname "$out")"
-cp -r "$staging" "$out"
-echo "$out: $top ($(echo "$headers" | wc -l) kernel headers, $(grep -c '^>' "$vectors") vectors)"
+if [ -d "$stage_root/.outdir" ]; then
+  # OUTDIR's marker first, so that an interrupted run can be repeated; then one bundle per top.
+  of_install "$stage_root/.outdir" "$out" "$marker" "$(marker_header all "$(tops | sed 's/^/bundle /')")"
+fi
+for top in $selected; do
+  of_install "$stage_root/$top" "$(folder_of "$top")" "$marker" "$(marker_header "$top")"
+  headers=$(cd "$stage_root/$top" && find hls -name '*.hpp' | wc -l)
+  echo "$(folder_of "$top"): $top ($headers kernel headers, $(grep -c '^>' "$repo/verif/golden/hls/$top.vec") vectors)"
+done

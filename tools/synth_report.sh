@@ -25,13 +25,21 @@
 # Usage: tools/synth_report.sh [out_dir] [design...]   (default: build-rtl/synth, all designs)
 # Writes out_dir/<design>.log (yosys), out_dir/<design>.txt (the table) and out_dir/report.txt (all
 # tables); exits non-zero on any yosys error or an empty table.
+# It never overwrites what it did not write: out_dir's marker .cig-synth-report lists the files it
+# wrote there, and a file it would write that exists but is not listed is refused (exit 2, before
+# any work), unless out_dir lies in a build folder of this source tree (generated files only). It
+# deletes nothing. Refused too: the source tree outside its build*/ and out/ folders, a parent of
+# it, $HOME and its parents, an existing non-folder (tools/lib/output_folder.sh).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(realpath "$(dirname "$0")/..")
+# shellcheck disable=SC2034  # read by tools/lib/output_folder.sh
+of_prog=synth_report
+# shellcheck source-path=SCRIPTDIR source=lib/output_folder.sh
+source "$root/tools/lib/output_folder.sh"
 out=${1:-$root/build-rtl/synth}
 shift || true
 designs=("$@")
 [ ${#designs[@]} -gt 0 ] || designs=(pe_mid pe_pixel raster ip_pe_57 ip_pe_64 ip_array_16)
-mkdir -p "$out"
 command -v yosys >/dev/null || { echo "synth_report: yosys not found (tools/deps.sh installs it)" >&2; exit 2; }
 
 # The RTL sources in compile order (the package first): the lists rtl/qt_sources.cmake and
@@ -68,6 +76,20 @@ design_pre() {
   esac
 }
 
+# Every check before any work: the design names, the output folder and the files it will write
+# there; the marker lists them before the first is written, so that a stopped run can be repeated.
+for d in "${designs[@]}"; do design_args "$d" >/dev/null; done
+of_check_place "$out" "$root" build
+out=$(of_resolve "$out")
+written=(report.txt)
+for d in "${designs[@]}"; do
+  for suffix in ys log stat.txt mapped.il ltp.ys ltp.txt ltp.log txt; do written+=("$d.$suffix"); done
+done
+of_check_written "$out" .cig-synth-report "$root" "${written[@]}"
+mkdir -p "$out"
+of_write_marker "$out" .cig-synth-report "cig-synth-report 1
+written_by tools/synth_report.sh" \
+  "$({ of_manifest "$out" .cig-synth-report; printf '%s\n' "${written[@]}"; } | sort -u)"
 : > "$out/report.txt"
 for d in "${designs[@]}"; do
   args=$(design_args "$d")

@@ -10,10 +10,12 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "cli/compare_command.hpp"
 #include "cli/frame_jobs.hpp"
+#include "cli/output_plan.hpp"
 #include "cli/review_outputs.hpp"
 #include "common/progress.hpp"
 #include "image/image_compare.hpp"
@@ -55,6 +57,17 @@ void print_row(const Comparison& r) {
 
 namespace {
 
+// The files --out receives: per image its difference and side-by-side images (compare_all writes
+// them), and with --html the page (the report's default place is --report's to check).
+std::set<std::string> compare_output_names(const FrameJobs& jobs, bool html) {
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < jobs.size(); ++k)
+    for (const char* kind : {"diff", "side"})
+      names.insert(compare_image_file("", jobs.frame(k), jobs.channel(k), kind));
+  if (html) names.insert("index.html");
+  return names;
+}
+
 // Renders every image with the engine and the reference on all cores; one Comparison per image.
 std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jobs, const EngineOptions& eo,
                                     const EngineOptions& ro, bool classify) {
@@ -83,9 +96,7 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
         if (classify && rows[k].error.sum_squared > 0)
           attribute_priority(rows[k], got.out, want.out, priority_ref->render(f).out);
         if (!c.out_dir.empty())
-          write_png((std::filesystem::path(c.out_dir) /
-                     (frame_name(jobs.frame(k)) + "_ch" + std::to_string(jobs.channel(k)) + "_diff.png"))
-                        .string(),
+          write_png(compare_image_file(c.out_dir, jobs.frame(k), jobs.channel(k), "diff"),
                     difference_image(got.out.image, want.out.image, 8));
         if (!c.out_dir.empty()) write_side_image(c.out_dir, rows[k], c.engine.engine, c.reference, got.out, want.out);
         progress.step(image);
@@ -155,8 +166,11 @@ int CompareCommand::run() {
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   jobs.check_capacity(*make_engine(engine.engine, eo));
   if (html) prepare_compare_html(out_dir, report_file);
-  if (!out_dir.empty()) check_output_dir(out_dir, "--out");
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  if (!out_dir.empty()) plan.folder(out_dir, "--out", compare_output_names(jobs, html));
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  plan.check();
   if (!out_dir.empty()) std::filesystem::create_directories(out_dir);
   const bool classify = ro.params.count("visibility") == 0;  // a z-buffered reference
   const std::vector<Comparison> rows = compare_all(*this, jobs, eo, ro, classify);

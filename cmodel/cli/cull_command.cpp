@@ -6,6 +6,7 @@
 #include <iostream>
 #include <limits>
 
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "common/timing.hpp"
 #include "image/image.hpp"
@@ -79,7 +80,10 @@ int CullCommand::run() {
   const Scene scene = load_scene(scene_file, model_limit.limits());
   int a = 0, b = 0;
   frame_range(frames_text, frame_k, frame_opt->count() > 0, scene.frame_count(), scene_file, a, b);
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  plan.scene_inputs(scene);
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  plan.check();
   if (!(near_distance <= far_distance)) throw InputError("", "--near", "D_near must not exceed D_far");
   const WorldDatabase db = build_world_database(scene);
   const SceneQuadtree tree(db);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cli/cli_common.hpp"
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "common/json_reader.hpp"
 #include "frame/input_kind.hpp"
@@ -73,6 +74,11 @@ void FrameJobs::check_capacity(const RasterEngine& engine) const {
     if (!e.file().empty()) throw;
     throw InputError(input_, e.where(), e.rule());  // the input that makes the frame
   }
+}
+
+void FrameJobs::declare_inputs(OutputPlan& plan) const {
+  if (scene_) plan.scene_inputs(*scene_);
+  else plan.input(input_, "the polygon list this run reads");
 }
 
 Comparison compare_run(int frame, int channel, const RasterImage& got, const RasterImage& reference) {

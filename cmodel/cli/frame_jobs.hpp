@@ -19,6 +19,8 @@
 
 namespace cig::cli {
 
+class OutputPlan;
+
 // --reference float | float-snap | float-snap-priority: the float engine, unsnapped or snapped to
 // the formatter grid, z-buffered or by list order; --reference-spp: its samples per pixel (16 as
 // the engines, or 64 / 256 for a ground truth finer than any engine).
@@ -45,6 +47,8 @@ class FrameJobs {
   // Every image against the engine's capacities before any work (RasterEngine::check_frame). A
   // scene whose polygons and lights all fit is not run through stages A and B for it.
   void check_capacity(const RasterEngine& engine) const;
+  // The files the images come from (the polygon list, or the scene and its OBJ models).
+  void declare_inputs(OutputPlan& plan) const;
 
  private:
   std::string input_;              // the file, for errors

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 
 #include "cli/cli_common.hpp"
 #include "common/error.hpp"
@@ -17,9 +18,11 @@ void check_plot_output(const std::string& plot_file, const char* option) {
     throw InputError("", option, "needs gnuplot (Debian package gnuplot-nox; tools/deps.sh installs it)");
 }
 
-GnuplotJob::GnuplotJob(const std::string& tag)
-    : dir_(std::filesystem::temp_directory_path() / ("cig-" + tag + "-" + std::to_string(::getpid()))) {
-  std::filesystem::create_directories(dir_);
+// A new folder of its own (mkdtemp), so that the destructor removes nothing it did not create.
+GnuplotJob::GnuplotJob(const std::string& tag) {
+  std::string name = (std::filesystem::temp_directory_path() / ("cig-" + tag + "-XXXXXX")).string();
+  if (::mkdtemp(name.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder " + name);
+  dir_ = name;
 }
 
 GnuplotJob::~GnuplotJob() {

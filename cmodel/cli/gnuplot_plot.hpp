@@ -13,7 +13,7 @@ void check_plot_output(const std::string& plot_file, const char* option);
 
 class GnuplotJob {
  public:
-  explicit GnuplotJob(const std::string& tag);  // a folder cig-TAG-PID under the temporary folder
+  explicit GnuplotJob(const std::string& tag);  // a new folder cig-TAG-XXXXXX under the temporary folder
   ~GnuplotJob();
   GnuplotJob(const GnuplotJob&) = delete;
   GnuplotJob& operator=(const GnuplotJob&) = delete;

@@ -3,6 +3,7 @@
 
 #include <iostream>
 
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
@@ -27,7 +28,10 @@ int PolysCommand::run() {
                          std::to_string(scene.frame_count() - 1) + ")");
   if (channel < 0 || channel >= int(scene.channels.size()))
     throw InputError(scene_file, "--channel", "channel " + std::to_string(channel) + " does not exist");
-  check_output_file(out_file, "--out");
+  OutputPlan plan;
+  plan.scene_inputs(scene);
+  plan.file(out_file, "--out");
+  plan.check();
   const ScenePipeline pipeline(scene);
   nlohmann::ordered_json rep;
   const ScreenFrame f = pipeline.geometry(frame, channel, rep);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cli/output_plan.hpp"
 #include "image/image.hpp"
 
 namespace cig::cli {
@@ -23,9 +24,12 @@ int RasterCommand::run() {
   auto eng = make_engine(engine.engine, eo);
   eng->check_raster(frame.raster);
   eng->check_frame(frame);
-  check_output_file(out_file, "--out");
-  if (!ids_file.empty()) check_output_file(ids_file, "--ids");
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  plan.input(polys_file, "the polygon list this run reads");
+  plan.file(out_file, "--out");
+  if (!ids_file.empty()) plan.file(ids_file, "--ids");
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  plan.check();
   const auto t0 = Clock::now();
   EngineRun run = eng->render(frame);
   run.report["ms"] = ms_since(t0);

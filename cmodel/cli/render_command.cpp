@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <thread>
 
+#include "cli/output_plan.hpp"
 #include "common/progress.hpp"
 #include "image/image.hpp"
 #include "pipeline/scene_pipeline.hpp"
@@ -60,14 +62,31 @@ std::vector<int> selected_channels(const Scene& scene, int channel) {
   return channels;
 }
 
+// A channel image's file name without its extension.
+std::string image_name(const Scene& scene, int frame, int channel) {
+  return frame_name(frame) + "_ch" + std::to_string(channel) + "_" +
+         safe_name(scene.channels[std::size_t(channel)].name);
+}
+
+// Every file the run writes into --out, known before the work (OutputPlan): per frame one PNG (and
+// id buffer) per channel, and the panorama when there is more than one channel.
+std::set<std::string> output_names(const Scene& scene, int a, int b, const std::vector<int>& channels, bool ids) {
+  std::set<std::string> names;
+  for (int frame = a; frame <= b; ++frame) {
+    for (int c : channels) {
+      names.insert(image_name(scene, frame, c) + ".png");
+      if (ids) names.insert(image_name(scene, frame, c) + ".ids");
+    }
+    if (channels.size() > 1) names.insert(frame_name(frame) + "_panorama.png");
+  }
+  return names;
+}
+
 // One PNG (and id buffer) per channel; each channel's report names its image.
 void write_channel_images(const Scene& scene, const std::string& out_dir, int frame, bool write_ids_files,
                           std::vector<ChannelOutput>& outs) {
   for (auto& co : outs) {
-    const std::string base =
-        (std::filesystem::path(out_dir) / (frame_name(frame) + "_ch" + std::to_string(co.channel) + "_" +
-                                           safe_name(scene.channels[std::size_t(co.channel)].name)))
-            .string();
+    const std::string base = (std::filesystem::path(out_dir) / image_name(scene, frame, co.channel)).string();
     write_png(base + ".png", co.out.image);
     if (write_ids_files) write_ids(base + ".ids", co.out.ids);
     co.report["image"] = base + ".png";
@@ -139,10 +158,15 @@ int RenderCommand::run() {
   probe->check_raster(scene.raster);
   probe->check_scene(scene);
   if (pipelines > 1) probe->check_renders_parts();
-  check_output_dir(out_dir, "--out");
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
-  else check_output_file(report_file, "--report");
   if (html) prepare_render_html(out_dir);
+  OutputPlan plan;
+  plan.scene_inputs(scene);
+  std::set<std::string> names = output_names(scene, a, b, channels, write_ids_files);
+  if (html) names.insert("index.html");
+  plan.folder(out_dir, "--out", names);
+  plan.file(report_file, "--report");
+  plan.check();
   check_frames(scene, a, b, channels, engine.engine, eo);
   std::filesystem::create_directories(out_dir);
 

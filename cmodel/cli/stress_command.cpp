@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/cli_common.hpp"
+#include "cli/output_plan.hpp"
 #include "cli/stress_lists.hpp"
 #include "image/image.hpp"
 #include "scene/scene.hpp"
@@ -26,7 +27,9 @@ int StressCommand::run() {
                      "raster size " + std::to_string(raster) + " is not a power of two in [" +
                          std::to_string(kMinRaster) + ", " + std::to_string(kMaxRaster) + "]");
   const ScreenFrame f = make_stress_list(class_name, seed, raster);
-  check_output_file(out_file, "--out");
+  OutputPlan plan;
+  plan.file(out_file, "--out");
+  plan.check();
   write_text_file(out_file, polygon_list_json(f));
   std::cout << "cig: wrote " << f.polygons.size() << " polygon(s) of class " << class_name << " (seed " << seed
             << (stress_class_on_grid(class_name) ? ", vertices on the formatter grid" : ", vertices off the grid")

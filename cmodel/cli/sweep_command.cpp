@@ -27,6 +27,7 @@
 
 #include "cli/frame_jobs.hpp"
 #include "cli/gnuplot_plot.hpp"
+#include "cli/output_plan.hpp"
 #include "cli/review_outputs.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
@@ -272,7 +273,12 @@ int SweepCommand::run() {
     } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
   }
   if (!html_dir.empty()) prepare_sweep_html(html_dir, report_file, plot_file);
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  if (!html_dir.empty()) plan.folder(html_dir, "--html", {"index.html"});
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!plot_file.empty()) plan.file(plot_file, "--plot");
+  plan.check();
   check_plot_output(plot_file, "--plot");
   std::vector<SweepRow> rows = measure(jobs, combos, ro, engines, repeat);
   mark_pareto(rows);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli/gnuplot_plot.hpp"
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "invparam/word_length_study.hpp"
 
@@ -222,7 +223,10 @@ int WordLengthCommand::run() {
   o.lattice = lattice;
   o.seed = seed;
   check_word_length_options(o);
-  if (!report_file.empty()) check_output_file(report_file, "--report");
+  OutputPlan plan;
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!plot_file.empty()) plan.file(plot_file, "--plot");
+  plan.check();
   check_plot_output(plot_file, "--plot");
   WordLengthStudy s;
   {

@@ -11,6 +11,7 @@
 
 #include "cli/cli_common.hpp"
 #include "cli/frame_jobs.hpp"
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "cosim.hpp"
 #include "cosim_command.hpp"
@@ -76,8 +77,11 @@ int CosimCommand::run_quadtree() {
                      "the RTL build has no configuration " + a.text + " for a " + std::to_string(raster) +
                          "-line raster" +
                          (have.empty() ? " (it has none for that raster)" : " (it has: " + have + ")"));
-  if (!report_file.empty()) check_output_file(report_file, "--report");
-  if (!trace_file.empty()) check_output_file(trace_file, "--trace");
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!trace_file.empty()) plan.file(trace_file, "--trace");
+  plan.check();
   auto rtl = cosim::make_rtl_runner(cfg.raster_log2, cfg.tree_levels);
   if (!trace_file.empty()) {
     const auto parent = std::filesystem::path(trace_file).parent_path();

@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.hpp"
 #include "cli/frame_jobs.hpp"
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "cosim_command.hpp"
 #include "ip_cosim.hpp"
@@ -57,8 +58,11 @@ int CosimCommand::run_invparam() {
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   const std::vector<ScreenFrame> frames = invparam_frames(jobs, input);
-  if (!report_file.empty()) check_output_file(report_file, "--report");
-  if (!trace_file.empty()) check_output_file(trace_file, "--trace");
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  if (!trace_file.empty()) plan.file(trace_file, "--trace");
+  plan.check();
   auto rtl = cosim::make_ip_rtl(cfg.w, cfg.n_pp);
   if (!trace_file.empty()) {
     const auto parent = std::filesystem::path(trace_file).parent_path();
