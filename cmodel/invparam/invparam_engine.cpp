@@ -322,8 +322,8 @@ class InvparamEngine : public RasterEngine {
   const char* name_;
   int bits_ = 64;
   int side_log2_ = 2;
-  bool covered_ = false;   // streaming=covered: objects only to the columns they span
-  double clock_ns_ = 3.0;  // t_t: the seed's 3 ns clock of its fastest estimate
+  bool covered_ = false;                       // streaming=covered: objects only to the columns they span
+  double clock_ns_ = kInvparamDefaultClockNs;  // t_t
 };
 
 }  // namespace

@@ -24,7 +24,7 @@ struct QuadOptions {
   bool start_window = false;  // start=bbox: each piece's subdivision starts at its start window
   std::string format = "fine";
   int fifo = 2;
-  double clock_mhz = 100;
+  double clock_mhz = kQuadDefaultClockMhz;
   int side_log2 = hls::kDefaultSideLog2;  // spp = 4^t samples per pixel
   int threads = 1;                        // workers for one image (PixelFrame::set_threads)
 };

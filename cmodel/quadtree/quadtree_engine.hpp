@@ -9,7 +9,7 @@
 //                   (ArchConfig::start_window; same image, fewer cycles)
 //   format=coarse|medium|fine   parameter formats (hls/quadtree/records.hpp), default fine
 //   fifo=K          FIFO depth between stages, 1..64, default 2
-//   clock=MHZ       the clock the report converts cycles at, default 100
+//   clock=MHZ       the clock the report converts cycles at, default 100 (kQuadDefaultClockMhz)
 #pragma once
 
 #include <memory>
@@ -17,6 +17,10 @@
 #include "engine/engine.hpp"
 
 namespace cig {
+
+// The clock the architecture model assumes unless clock=MHZ says otherwise (the report's frame_ms;
+// `cig cosim --trace` draws a cycle as one period of it).
+constexpr double kQuadDefaultClockMhz = 100;
 
 std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin);
 
