@@ -16,6 +16,7 @@ test_packages=(
   libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
   assimp-testmodels               # real OBJ models for the loader tests
   verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
+  gtkwave                         # fst2vcd: the co-simulation's trace test reads its FST (cosim.trace)
   gnuplot-nox                     # `cig sweep --plot`: the run-time / error frontier as a PNG
   libosmesa6-dev                  # bench_llvmpipe (tools/bench.sh): Mesa's llvmpipe as the benchmark's peer
 )

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_common.hpp"
+#include "invparam/invparam_engine.hpp"
 
 namespace cig::cli {
 
@@ -27,7 +28,7 @@ struct ArchCommand {
   int faces_per_object = 6, columns = 512, pps = 512;
   std::vector<long long> objects{100, 1000, 10000, 100000};
   std::vector<double> widths{10, 50, 100, 250, 500};
-  double clock_ns = 3;
+  double clock_ns = kInvparamDefaultClockNs;
   void add_to(CLI::App& app);
   int run();
 

@@ -44,10 +44,15 @@ const ScreenFrame& RasterEngine::on_formatter_grid(const ScreenFrame& frame, Scr
 
 // The fan split decides on the positions as given (as without a grid setting), then the pieces
 // are snapped: a triangle of the fan keeps its polygon's vertices, so it snaps to the same points.
+const ScreenFrame& RasterEngine::engine_frame(const ScreenFrame& frame, FanSplit& split, ScreenFrame& snapped) const {
+  split = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
+  return on_formatter_grid(split.polygons_split > 0 ? split.frame : frame, snapped);
+}
+
 EngineRun RasterEngine::render(const ScreenFrame& frame) {
-  const FanSplit s = fan_split_ ? split_nonplanar_polygons(frame) : FanSplit{};
+  FanSplit s;
   ScreenFrame snapped;
-  EngineRun run = render_frame(on_formatter_grid(s.polygons_split > 0 ? s.frame : frame, snapped));
+  EngineRun run = render_frame(engine_frame(frame, s, snapped));
   if (s.polygons_split > 0) map_ids_to_source(run.out.ids, s.source);
   run.report["fan_split"] = {
       {"on", fan_split_}, {"polygons_split", s.polygons_split}, {"triangles_added", s.triangles_added}};

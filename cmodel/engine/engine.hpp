@@ -18,6 +18,8 @@
 
 namespace cig {
 
+struct FanSplit;  // engine/fan_split.hpp
+
 // The float reference's polygons (and light points) per channel: its ids are 32-bit and it keeps
 // every polygon's setup in memory, so the bound only keeps a channel within a few GB. The
 // hardware engines take 65,536 (their 16-bit polygon ids).
@@ -63,6 +65,12 @@ class RasterEngine {
   // scene's objects refuses a scene with none of them, rather than a frame in the middle of a run.
   virtual void check_scene(const Scene& /*scene*/) const {}
   void set_fan_split(bool on) { fan_split_ = on; }
+  bool fan_split() const { return fan_split_; }
+  // The frame the engine proper rasterises, render's first step: `frame` with its non-planar
+  // polygons split into fans unless the setting is off (`split` gets the split and its counts),
+  // then on the formatter grid setting's grid (`snapped` holds that copy). The result is `frame`,
+  // split.frame or `snapped`. The co-simulation (`cig cosim`) runs the stream of this frame.
+  const ScreenFrame& engine_frame(const ScreenFrame& frame, FanSplit& split, ScreenFrame& snapped) const;
   // The fixed engines format on the 12-bit grid of eq. 1; with a sub-pixel setting their input
   // is first snapped to the coarser grid it names (g = log2(raster) + B <= 12, else InputError).
   void set_formatter_grid(int subpixel_bits) { subpixel_bits_ = subpixel_bits; }

@@ -120,6 +120,12 @@ EngineOptionSpec real_option(std::string key, double above, double max, std::str
   return s;
 }
 
+EngineOptionSpec real_option(std::string key, double above, double max, double default_value, std::string help) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", default_value);
+  return real_option(std::move(key), above, max, std::string(text), std::move(help));
+}
+
 EngineOptionSpec syntax_option(std::string key, std::string syntax, void (*check)(const std::string&),
                                std::string default_value, std::string help, std::string shorthand) {
   EngineOptionSpec s;

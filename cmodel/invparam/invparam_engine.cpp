@@ -312,8 +312,8 @@ class InvparamEngine : public RasterEngine {
   const char* name_;
   int bits_ = 64;
   int side_log2_ = 2;
-  bool covered_ = false;   // streaming=covered: objects only to the columns they span
-  double clock_ns_ = 3.0;  // t_t: the seed's 3 ns clock of its fastest estimate
+  bool covered_ = false;                       // streaming=covered: objects only to the columns they span
+  double clock_ns_ = kInvparamDefaultClockNs;  // t_t
 };
 
 }  // namespace
@@ -334,7 +334,8 @@ std::vector<EngineOptionSpec> invparam_engine_options(bool twin) {
   specs.push_back(choice_option("streaming", {"full", "covered"}, "full",
                                 "the array's object stream: to every column (the seed's) or to the columns an object "
                                 "spans (the report's hardware_ms)"));
-  specs.push_back(real_option("clock-ns", 0, 1e6, "3", "the array's clock period in ns (the seed's 3 ns)"));
+  specs.push_back(
+      real_option("clock-ns", 0, 1e6, kInvparamDefaultClockNs, "the array's clock period in ns (the seed's 3 ns)"));
   return specs;
 }
 

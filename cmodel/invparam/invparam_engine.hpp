@@ -30,6 +30,10 @@ namespace cig {
 
 constexpr int kMinWordBits = 24;
 constexpr int kMaxWordBits = 80;
+// t_t, the PP's clock period unless clock-ns=T says otherwise: the seed's 3 ns clock of its
+// fastest estimate (`cig arch --processor invparam --clock-ns`; `cig cosim --trace` draws a cycle as
+// one period of it).
+constexpr double kInvparamDefaultClockNs = 3.0;
 
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin);
 std::vector<EngineOptionSpec> invparam_engine_options(bool twin);  // the twin has no bits=

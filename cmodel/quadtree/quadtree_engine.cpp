@@ -24,7 +24,7 @@ struct QuadOptions {
   bool start_window = false;  // start=bbox: each piece's subdivision starts at its start window
   std::string format = "fine";
   int fifo = 2;
-  double clock_mhz = 100;
+  double clock_mhz = kQuadDefaultClockMhz;
   int side_log2 = hls::kDefaultSideLog2;  // spp = 4^t samples per pixel
   int threads = 1;                        // workers for one image (PixelFrame::set_threads)
 };
@@ -287,7 +287,7 @@ std::vector<EngineOptionSpec> quadtree_engine_options(bool twin) {
     specs.push_back(choice_option("format", {"coarse", "medium", "fine"}, "fine",
                                   "the parameter formats, hls/quadtree/records.hpp"));
   specs.push_back(integer_option("fifo", 1, 64, "2", "FIFO depth between stages"));
-  specs.push_back(real_option("clock", 0, 1e6, "100", "the clock in MHz the report converts cycles at"));
+  specs.push_back(real_option("clock", 0, 1e6, kQuadDefaultClockMhz, "the clock in MHz the report converts cycles at"));
   specs.push_back(samples_per_pixel_option(hls::kMaxSideLog2));
   return specs;
 }

@@ -18,6 +18,10 @@
 
 namespace cig {
 
+// The clock the architecture model assumes unless clock=MHZ says otherwise (the report's frame_ms;
+// `cig cosim --trace` draws a cycle as one period of it).
+constexpr double kQuadDefaultClockMhz = 100;
+
 std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin);
 std::vector<EngineOptionSpec> quadtree_engine_options(bool twin);  // the twin has no format=
 

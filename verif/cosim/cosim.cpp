@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 #include "common/error.hpp"
 #include "common/timing.hpp"
+#include "engine/fan_split.hpp"
+#include "registry/engine_registry.hpp"
 
 namespace cig::cosim {
 
@@ -165,7 +168,8 @@ Comparison compare_traces(const RtlLayout& L, const Trace& model, const Trace& r
 }
 
 CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<hls::QuadWindow<RtlArith>>& roots,
-                         RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls, long long max_cycles) {
+                         RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls, long long max_cycles,
+                         const CycleProgress& progress) {
   CosimResult r;
   const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
   quad::PixelFrame<RtlArith> pixels;
@@ -175,22 +179,79 @@ CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<
     throw InputError("", "light_points",
                      "the light points touch " + std::to_string(pixels.covers().size()) +
                          " pixels; the RTL's light-cover table (LIGHT_COVERS) holds " + std::to_string(light_covers));
-  r.rtl = rtl.run(roots, pixels, stalls, max_cycles);
-  pixels.begin(frame_for_tables, cfg.raster_log2);  // the model starts from the same tables, cleared states
   r.model = model_trace(arch, roots, pixels, stalls, 2, &r.stats);
+  pixels.begin(frame_for_tables, cfg.raster_log2);  // the RTL starts from the same tables, cleared states
+  if (progress) rtl.on_cycles([&](long long c) { progress(c, r.model.cycles); });
+  try {
+    r.rtl = rtl.run(roots, pixels, stalls, max_cycles);
+  } catch (...) {
+    rtl.on_cycles({});
+    throw;
+  }
+  rtl.on_cycles({});
   r.comparison = compare_traces(rtl_layout(), r.model, r.rtl);
   return r;
 }
 
-CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
-                        long long max_cycles) {
+namespace {
+
+void check_raster(const ScreenFrame& frame, const RtlConfig& cfg) {
   if (frame.raster != (1 << cfg.raster_log2))
     throw InputError("", "--arch",
                      "the RTL configuration " + cfg.arch_text() + " renders " + std::to_string(1 << cfg.raster_log2) +
                          " lines; the input has " + std::to_string(frame.raster));
+}
+
+}  // namespace
+
+CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
+                        long long max_cycles, const CycleProgress& progress) {
+  check_raster(frame, cfg);
   quad::FrontEndStats fe;
   const std::vector<hls::QuadWindow<RtlArith>> roots = quad::front_end<RtlArith>(frame, cfg.raster_log2, fe);
-  return cosim_stream(frame, roots, rtl, cfg, stalls, max_cycles);
+  return cosim_stream(frame, roots, rtl, cfg, stalls, max_cycles, progress);
+}
+
+long long model_cycles(const ScreenFrame& frame, const RtlConfig& cfg, const StallConfig& stalls) {
+  check_raster(frame, cfg);
+  quad::FrontEndStats fe;
+  const std::vector<hls::QuadWindow<RtlArith>> roots = quad::front_end<RtlArith>(frame, cfg.raster_log2, fe);
+  const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
+  quad::ArchConfig ac;
+  ac.fifo_depth = 2;
+  ac.masks = true;
+  ac.stall_seed = stalls.seed;
+  ac.input_gap_percent = stalls.input_gap_percent;
+  ac.output_stall_percent = stalls.output_stall_percent;
+  ac.start_window = stalls.start_window;
+  quad::ArchModel<RtlArith> model(arch, ac);
+  quad::PixelFrame<RtlArith> pixels;
+  pixels.begin(frame, cfg.raster_log2);
+  auto masks = std::make_unique<hls::MaskMemory>();
+  hls::mask_clear(*masks, arch.raster_log2);
+  return model.run(roots, *masks, pixels).cycles;
+}
+
+std::unique_ptr<RasterEngine> quadtree_engine(const RtlConfig& cfg, const StallConfig& stalls, bool fan_split) {
+  EngineOptions o;
+  o.fan_split = fan_split;
+  o.params["arch"] = cfg.arch_text();
+  o.params["start"] = stalls.start_window ? "bbox" : "screen";
+  static_assert(std::is_same_v<RtlArith, hls::QuadFixedArith<hls::QuadFormatFine>>, "the engine's format=fine");
+  o.params["format"] = "fine";
+  return make_engine("quadtree", o);
+}
+
+EngineStream engine_stream(const RasterEngine& engine, const ScreenFrame& frame) {
+  engine.check_frame(frame);
+  FanSplit split;
+  ScreenFrame snapped;
+  EngineStream out;
+  out.frame = engine.engine_frame(frame, split, snapped);
+  out.fan_split = engine.fan_split();
+  out.polygons_split = split.polygons_split;
+  out.triangles_added = split.triangles_added;
+  return out;
 }
 
 }  // namespace cig::cosim

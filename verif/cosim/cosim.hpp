@@ -16,15 +16,18 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "engine/engine.hpp"
 #include "image/image.hpp"
 #include "quadtree/arch_model.hpp"
 #include "quadtree/quadtree_frame.hpp"
 #include "record_bits.hpp"
+#include "trace_settings.hpp"
 
 namespace cig::cosim {
 
@@ -154,8 +157,15 @@ class RtlRunner {
   // The trace holds the events of the first `cycles` cycles, no image.
   virtual Trace run_cut(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
                         const StallConfig& stalls, long long cycles, int hold) = 0;
-  // FST waveform of the following runs (this build must have tracing on).
-  virtual void trace_to(const std::string& fst_file) = 0;
+  // FST waveform of the next run (this build must have tracing on): the cycles and scopes the
+  // settings name (trace_settings.hpp), the file closed when that run ends.
+  virtual void trace_to(const TraceSettings& trace) = 0;
+  void trace_to(const std::string& fst_file) { trace_to(TraceSettings{fst_file}); }
+  // Called every kProgressCycles cycles of a run with the cycle reached ({}: none).
+  void on_cycles(std::function<void(long long)> f) { on_cycles_ = std::move(f); }
+
+ protected:
+  std::function<void(long long)> on_cycles_;
 };
 // nullptr when this build has no such configuration.
 std::unique_ptr<RtlRunner> make_rtl_runner(int raster_log2, int tree_levels);
@@ -163,17 +173,34 @@ std::unique_ptr<RtlRunner> make_rtl_runner(int raster_log2, int tree_levels);
 // throws); nullptr for the other configurations. In the library cig_cosim_fast (bench_rtl).
 std::unique_ptr<RtlRunner> make_fast_rtl_runner(int raster_log2, int tree_levels);
 
-// One frame through both sides.
+// One frame through both sides: the model first, then the RTL (its progress: the cycles done and
+// the model's count).
 struct CosimResult {
   Trace model, rtl;
   Comparison comparison;
   quad::ArchStats stats;
 };
+using CycleProgress = std::function<void(long long done, long long total)>;
 CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
-                        long long max_cycles = 200000000);
+                        long long max_cycles = 200000000, const CycleProgress& progress = {});
 // The same on a stream of windows already set up (tests build their own streams).
 CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<hls::QuadWindow<RtlArith>>& roots,
                          RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
-                         long long max_cycles = 200000000);
+                         long long max_cycles = 200000000, const CycleProgress& progress = {});
+// The model alone on the frame (no records kept): the frame's cycles, what the co-simulation will
+// count (a trace window is checked against them before the RTL runs).
+long long model_cycles(const ScreenFrame& frame, const RtlConfig& cfg, const StallConfig& stalls);
+
+// The quadtree engine of `cig render|raster --engine quadtree --arch A` with the co-simulation's
+// settings (the RTL's format, 16 samples, masks on, FIFO depth 2, the start window, the fan split
+// on or off), and the stream it runs from a frame: its own first step (RasterEngine::engine_frame:
+// the fan split of non-planar polygons, the formatter grid), its capacities checked (InputError).
+std::unique_ptr<RasterEngine> quadtree_engine(const RtlConfig& cfg, const StallConfig& stalls, bool fan_split);
+struct EngineStream {
+  ScreenFrame frame;  // the frame the engine rasterises
+  bool fan_split = true;
+  long polygons_split = 0, triangles_added = 0;
+};
+EngineStream engine_stream(const RasterEngine& engine, const ScreenFrame& frame);
 
 }  // namespace cig::cosim

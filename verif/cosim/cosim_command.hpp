@@ -1,8 +1,10 @@
 // `cig cosim` (the executable cig-cosim, cosim_main.cpp, with the Verilated RTL; `cig cosim`
 // forwards to it): runs the same input through the quadtree RTL and through the kernels +
-// architecture model (--processor quadtree, the default), or a scene's polyhedra through the
-// inverse-parameter array RTL and its clock-level model (--processor invparam), and reports the
-// comparisons, the mismatches, the cycles of both and the simulation speed.
+// architecture model (--processor quadtree, the default: the stream the quadtree engine runs, its
+// fan split included), or a scene's polyhedra through the inverse-parameter array RTL and its
+// clock-level model (--processor invparam), and reports the comparisons, the mismatches, the
+// cycles of both and the simulation speed; progress on stderr (cig::Progress), the FST trace of
+// the first image on request (cosim_trace.hpp).
 #pragma once
 
 #include <string>
@@ -22,7 +24,11 @@ struct CosimCommand {
   int input_gaps = 0, output_stalls = 0;
   int vt_stalls = 0, word_bits = 64, pps = 64;  // invparam: VT back-pressure, the configuration (W, N_PP)
   std::string start_window = "screen";          // --start-window screen|bbox (ArchConfig::start_window)
+  std::string fan_split = "on";                 // --fan-split on|off: the quadtree engine's stream
+  std::string trace_cycles;                     // --trace-cycles A:B (cosim_trace.hpp)
+  int trace_depth = 0;                          // --trace-depth N
   CLI::Option* frame_opt = nullptr;
+  CLI::Option *trace_cycles_opt = nullptr, *trace_depth_opt = nullptr;
   // Options of one processor only (an error with the other).
   std::vector<CLI::Option*> quadtree_only, invparam_only;
   ModelLimitArgs model_limit;

@@ -2,6 +2,7 @@
 // N_PP x N_PP lattice) through the Verilated ip_array and the clock-level model, back to back
 // without reset (ip_cosim.hpp); per frame the faces, samples, tokens, codes, the cycles of both,
 // the held cycles and the mismatches.
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -12,7 +13,10 @@
 #include "cli/frame_jobs.hpp"
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "cosim_command.hpp"
+#include "cosim_trace.hpp"
+#include "invparam/invparam_engine.hpp"
 #include "ip_cosim.hpp"
 
 namespace cig::cli {
@@ -49,9 +53,36 @@ cosim::IpRtlConfig pick_config(int bits, int pps) {
                        ", N_PP=" + std::to_string(pps) + " (it has: " + have + ")");
 }
 
+std::string image_name(const FrameJobs& jobs, std::size_t k) {
+  return "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k));
+}
+
+// Frame k's line of the table (stdout) and its entry in the report.
+nlohmann::ordered_json frame_row(const FrameJobs& jobs, std::size_t k, const cosim::IpFrameResult& r) {
+  const double speed = r.seconds > 0 ? double(r.rtl_cycles) / r.seconds : 0;
+  std::cout << std::setw(6) << jobs.frame(k) << std::setw(4) << jobs.channel(k) << std::setw(7) << r.faces
+            << std::setw(9) << r.samples << std::setw(8) << r.tokens << std::setw(8) << r.codes << std::setw(12)
+            << r.rtl_cycles << std::setw(14) << r.model_cycles << std::setw(8) << r.held_cycles << std::setw(12)
+            << r.mismatches << std::setw(14) << std::llround(speed) << "\n";
+  return {{"frame", jobs.frame(k)},
+          {"channel", jobs.channel(k)},
+          {"faces", r.faces},
+          {"samples", r.samples},
+          {"tokens", r.tokens},
+          {"codes", r.codes},
+          {"cycles_rtl", r.rtl_cycles},
+          {"cycles_model", r.model_cycles},
+          {"held_cycles", r.held_cycles},
+          {"vt_hits", r.vt_hits},
+          {"checks", r.checks},
+          {"mismatches", r.mismatches},
+          {"first_mismatch", r.first}};
+}
+
 }  // namespace
 
 int CosimCommand::run_invparam() {
+  CosimTrace trace(trace_file, trace_cycles, trace_depth, trace_cycles_opt->count() > 0, trace_depth_opt->count() > 0);
   if (input_gaps > 75)
     throw InputError("", "--input-gaps", "at most 75 with --processor invparam (the array would not drain in time)");
   const cosim::IpRtlConfig cfg = pick_config(word_bits, pps);
@@ -61,16 +92,23 @@ int CosimCommand::run_invparam() {
   OutputPlan plan;
   jobs.declare_inputs(plan);
   if (!report_file.empty()) plan.file(report_file, "--report");
-  if (!trace_file.empty()) plan.file(trace_file, "--trace");
-  plan.check();
-  auto rtl = cosim::make_ip_rtl(cfg.w, cfg.n_pp);
   if (!trace_file.empty()) {
-    const auto parent = std::filesystem::path(trace_file).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-    rtl->trace_to(trace_file);
+    plan.file(trace_file, "--trace");
+    plan.file(trace.save_file(), "--trace");
   }
+  plan.check();
+  trace.check_outputs();
+  auto rtl = cosim::make_ip_rtl(cfg.w, cfg.n_pp);
   const auto cosim = cosim::make_ip_frame_cosim(*rtl);
   const invparam::ArrayPacing pacing{stall_seed, input_gaps, vt_stalls};
+  if (trace.on()) {  // the first frame's cycles 1..C (the model counts them first)
+    const cosim::TraceSettings settings =
+        trace.plan(1, cosim->model_cycles(frames[0], pacing), std::llround(kInvparamDefaultClockNs * 1000),
+                   trace_cost(cfg.text()), image_name(jobs, 0));
+    const auto parent = std::filesystem::path(trace_file).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    rtl->trace_to(settings);
+  }
   std::cout << "cig cosim: " << input << ", processor invparam, ip_array " << cfg.text() << " (a " << cfg.n_pp << " x "
             << cfg.n_pp << " lattice), stalls: input gaps " << input_gaps << " %, VT stalls " << vt_stalls
             << " % (seed " << stall_seed << ")\n";
@@ -85,31 +123,21 @@ int CosimCommand::run_invparam() {
   rep["runs"] = nlohmann::ordered_json::array();
   long long checks = 0, mismatches = 0, bad_cycles = 0;
   std::string first;
+  Progress progress("cig cosim", (long long)frames.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
+    // The frame's cycles for the progress's total: the model alone first (a small share of the run).
+    const std::int64_t total = cosim->model_cycles(frames[k], pacing);
+    rtl->on_cycles([&](long long t) { progress.within(t, total, "cycles"); });
     const cosim::IpFrameResult r = cosim->run(frames[k], pacing);
-    const double speed = r.seconds > 0 ? double(r.rtl_cycles) / r.seconds : 0;
-    std::cout << std::setw(6) << jobs.frame(k) << std::setw(4) << jobs.channel(k) << std::setw(7) << r.faces
-              << std::setw(9) << r.samples << std::setw(8) << r.tokens << std::setw(8) << r.codes << std::setw(12)
-              << r.rtl_cycles << std::setw(14) << r.model_cycles << std::setw(8) << r.held_cycles << std::setw(12)
-              << r.mismatches << std::setw(14) << std::llround(speed) << "\n";
+    rep["runs"].push_back(frame_row(jobs, k, r));
     checks += r.checks;
     mismatches += r.mismatches;
     bad_cycles += r.rtl_cycles == r.model_cycles ? 0 : 1;
     if (first.empty() && !r.first.empty()) first = r.first;
-    rep["runs"].push_back({{"frame", jobs.frame(k)},
-                           {"channel", jobs.channel(k)},
-                           {"faces", r.faces},
-                           {"samples", r.samples},
-                           {"tokens", r.tokens},
-                           {"codes", r.codes},
-                           {"cycles_rtl", r.rtl_cycles},
-                           {"cycles_model", r.model_cycles},
-                           {"held_cycles", r.held_cycles},
-                           {"vt_hits", r.vt_hits},
-                           {"checks", r.checks},
-                           {"mismatches", r.mismatches},
-                           {"first_mismatch", r.first}});
+    if (k == 0 && trace.on()) rep["trace"] = trace.finish(cosim::TracedDesign::kInvparamArray, r.seconds);
+    progress.step(image_name(jobs, k) + ": " + std::to_string(r.rtl_cycles) + " cycles");
   }
+  rtl->on_cycles({});
   std::cout << "all: " << checks << " values compared, " << mismatches << " mismatches, " << bad_cycles
             << " frame(s) with a cycle mismatch\n";
   if (!first.empty()) std::cout << "first mismatch: " << first << "\n";

@@ -13,13 +13,19 @@ class IpFrameCosimImpl final : public IpFrameCosim {
     const InvparamSetup<W> setup = invparam_setup<W>(frame, lattice_);
     const invparam::InvparamScene<W> scene = invparam_scene_of(setup);
     const int columns = lattice_.size();
-    IpFrameResult r = cosim_.run_frame(
-        invparam::build_frame_stream(scene, columns, cosim_.n_pp(), invparam::StreamMode::kFull), columns, pacing);
+    IpFrameResult r = cosim_.run_frame(stream(scene), columns, pacing);
     r.faces = std::int64_t(scene.faces.size());
     return r;
   }
+  std::int64_t model_cycles(const ScreenFrame& frame, const invparam::ArrayPacing& pacing) const override {
+    const InvparamSetup<W> setup = invparam_setup<W>(frame, lattice_);
+    return cosim_.model_cycles(stream(invparam_scene_of(setup)), lattice_.size(), pacing);
+  }
 
  private:
+  std::vector<invparam::StreamCode<W>> stream(const invparam::InvparamScene<W>& scene) const {
+    return invparam::build_frame_stream(scene, lattice_.size(), cosim_.n_pp(), invparam::StreamMode::kFull);
+  }
   InvparamLattice lattice_;  // L = N_PP (raster N_PP, one sample a pixel): setup_eps is -(L + 1)
   IpCosim<W> cosim_;
 };

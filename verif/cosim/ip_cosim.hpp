@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -24,6 +25,7 @@
 #include "frame/screen_frame.hpp"
 #include "invparam/face_setup.hpp"
 #include "invparam/systolic_array.hpp"
+#include "trace_settings.hpp"
 
 namespace cig::cosim {
 
@@ -43,9 +45,11 @@ class IpRtl {
   virtual int n_pp() const = 0;
   // Asynchronous reset, then one configuration cycle that writes RGeps of every PP.
   virtual void reset(std::uint64_t eps) = 0;
-  // One cycle: its stimulus, then the edge that starts it; the outputs below then show this cycle,
-  // before its own clock edge (the next call's).
-  virtual void cycle(bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) = 0;
+  // Cycle t of the frame (from 1): its stimulus, then the edge that starts it; the outputs below
+  // then show this cycle, before its own clock edge (the next call's).
+  virtual void cycle(std::int64_t t, bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) = 0;
+  // The frame is over (the trace of the next frame, trace_to, ends here).
+  virtual void end_frame() = 0;
   virtual bool in_ready() const = 0;
   virtual bool vt_valid() const = 0;
   virtual int vt_pp() const = 0;
@@ -55,7 +59,14 @@ class IpRtl {
   virtual std::uint64_t pp_word(int k) const = 0;
   virtual bool pp_start(int k) const = 0;
   virtual bool pp_valid(int k) const = 0;
-  virtual void trace_to(const std::string& fst_file) = 0;  // FST of the following cycles
+  // FST of the next frame (trace_settings.hpp: its cycles 1..C, or the window first..last).
+  virtual void trace_to(const TraceSettings& trace) = 0;
+  void trace_to(const std::string& fst_file) { trace_to(TraceSettings{fst_file}); }
+  // Called every kProgressCycles cycles with the cycle reached ({}: none).
+  void on_cycles(std::function<void(long long)> f) { on_cycles_ = std::move(f); }
+
+ protected:
+  std::function<void(long long)> on_cycles_;
 };
 // nullptr when this build has no such configuration.
 std::unique_ptr<IpRtl> make_ip_rtl(int w, int n_pp);
@@ -126,7 +137,7 @@ class IpHost {
     if (t != t_ + 1) throw std::logic_error("ip cosim: the RTL and the model are out of step");
     const invparam::ArrayInput<W> in = invparam::host_offer(stream_, next_, holding_, t, pacing_);
     const bool vt_ready = !stall_hit(pacing_.seed, std::uint64_t(t), 1, pacing_.vt_stall_percent);
-    rtl_.cycle(in.ctrl.valid, in.ctrl.start, word_bits<W>(in.word), vt_ready);
+    rtl_.cycle(t, in.ctrl.valid, in.ctrl.start, word_bits<W>(in.word), vt_ready);
     t_ = t;
     if (rtl_.in_ready()) {
       if (in.ctrl.valid && next_ < stream_.size()) ++next_;
@@ -255,10 +266,17 @@ class IpCosim {
       check.expect(host.cycles(), -1, "col_done_o: the frame goes on after the model's end", 0, 1);
     }
     r.rtl_cycles = host.end();
+    rtl_.end_frame();
     check.expect(host.cycles(), -1, "frame cycles (the (columns + 1)-th col_done_o)", std::uint64_t(r.model_cycles),
                  std::uint64_t(r.rtl_cycles));
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
+  }
+  // The model alone on a frame's stream from the chain's present state (both sides untouched).
+  std::int64_t model_cycles(const std::vector<invparam::StreamCode<W>>& stream, int columns,
+                            const invparam::ArrayPacing& pacing = {}) const {
+    std::vector<hls::PpState<W>> chain = chain_;
+    return invparam::run_array_frame(chain, stream, columns, pacing).clocks;
   }
   // The model's run of the last frame (its VT results per column and PP).
   const invparam::ArrayRun<W>& last_run() const { return run_; }
@@ -277,6 +295,7 @@ std::int64_t ip_rtl_run_frame(IpRtl& rtl, const std::vector<invparam::StreamCode
   detail::IpHost<W> host(rtl, stream, columns, pacing);
   const std::int64_t limit = 8 * (std::int64_t(stream.size()) + 4 * std::int64_t(rtl.n_pp()) + 16);
   while (host.end() == 0 && host.cycles() < limit) host.step(host.cycles() + 1);
+  rtl.end_frame();
   return host.end();
 }
 
@@ -307,6 +326,9 @@ class IpFrameCosim {
  public:
   virtual ~IpFrameCosim() = default;
   virtual IpFrameResult run(const ScreenFrame& frame, const invparam::ArrayPacing& pacing) = 0;
+  // The model alone on the frame from where the last frame left the chain (the RTL untouched): the
+  // cycles run() will count (a trace window is checked against them; the progress's total).
+  virtual std::int64_t model_cycles(const ScreenFrame& frame, const invparam::ArrayPacing& pacing) const = 0;
 };
 std::unique_ptr<IpFrameCosim> make_ip_frame_cosim(IpRtl& rtl);
 

@@ -20,6 +20,7 @@ namespace cig::cosim::detail {
 template <class Top, class Tb, bool kTrace = true>
 class IpRtlImpl final : public IpRtl, private VerilatedModel<Top, kTrace> {
   using Model = VerilatedModel<Top, kTrace>;
+  using Model::begin_cycle;
   using Model::fall;
   using Model::rise;
   using Model::top_;
@@ -30,6 +31,7 @@ class IpRtlImpl final : public IpRtl, private VerilatedModel<Top, kTrace> {
   int n_pp() const override { return int(Tb::N_PP); }
 
   void reset(std::uint64_t eps) override {
+    begin_cycle(-1);  // outside a frame: not traced
     top_->clk_i = 0;
     top_->rst_ni = 0;
     top_->cfg_eps_valid_i = 0;
@@ -52,7 +54,9 @@ class IpRtlImpl final : public IpRtl, private VerilatedModel<Top, kTrace> {
     top_->cfg_eps_valid_i = 0;
   }
 
-  void cycle(bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) override {
+  void cycle(std::int64_t t, bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) override {
+    if (on_cycles_ && t % kProgressCycles == 0) on_cycles_(t);
+    begin_cycle(t);
     top_->in_valid_i = in_valid;
     top_->in_start_i = in_start;
     top_->in_word_i = in_word;
@@ -70,7 +74,9 @@ class IpRtlImpl final : public IpRtl, private VerilatedModel<Top, kTrace> {
   bool pp_start(int k) const override { return port_bit(top_->pp_start_o, k); }
   bool pp_valid(int k) const override { return port_bit(top_->pp_valid_o, k); }
 
-  void trace_to(const std::string& file) override { Model::open_trace(file); }
+  void end_frame() override { Model::end_image(); }
+  using IpRtl::trace_to;
+  void trace_to(const TraceSettings& trace) override { Model::open_trace(trace); }
 };
 
 }  // namespace cig::cosim::detail

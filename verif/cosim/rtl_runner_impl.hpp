@@ -31,6 +31,8 @@ RtlModelParams model_params() {
 template <class Top, class Tb, bool kTrace = true>
 class RtlRunnerImpl final : public RtlRunner, private VerilatedModel<Top, kTrace> {
   using Model = VerilatedModel<Top, kTrace>;
+  using Model::begin_cycle;
+  using Model::end_image;
   using Model::fall;
   using Model::rise;
   using Model::top_;
@@ -54,11 +56,13 @@ class RtlRunnerImpl final : public RtlRunner, private VerilatedModel<Top, kTrace
 
   const RtlModelParams& params() const override { return params_; }
 
-  void trace_to(const std::string& file) override { Model::open_trace(file); }
+  using RtlRunner::trace_to;
+  void trace_to(const TraceSettings& trace) override { Model::open_trace(trace); }
 
   Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
             const StallConfig& stalls, long long max_cycles) override {
     Trace t = frame(roots, pixels, stalls, max_cycles, -1);
+    end_image();
     read_out(t);
     return t;
   }
@@ -69,7 +73,11 @@ class RtlRunnerImpl final : public RtlRunner, private VerilatedModel<Top, kTrace
     // The input idle and every pixel processor stalled: the records back up until the frame start.
     top_->poly_valid_i = 0;
     top_->pixel_stall_i = port_value_t<decltype(top_->pixel_stall_i)>(~std::uint64_t(0) >> (64 - npix_));
-    for (int k = 0; k < hold; ++k) edge();
+    for (int k = 0; k < hold; ++k) {
+      begin_cycle(cycles + k);
+      edge();
+    }
+    end_image();
     t.busy_at_cut = top_->busy_o;
     return t;
   }
@@ -115,6 +123,8 @@ class RtlRunnerImpl final : public RtlRunner, private VerilatedModel<Top, kTrace
       top_->pixel_stall_i = port_value_t<decltype(top_->pixel_stall_i)>(stall_bits);
       // The rising edge that starts this cycle: the design's registers take the previous cycle's
       // results, the wrapper latches this cycle's stimulus (qt_raster_cosim_tb.sv).
+      if (on_cycles_ && cycle % kProgressCycles == 0) on_cycles_(cycle);
+      begin_cycle(cycle);
       rise();
       // The frame's cycle count: the first cycle that starts with all input in and nothing busy.
       if (cycle > 0 && next >= roots.size() && !top_->busy_o) {
@@ -148,6 +158,7 @@ class RtlRunnerImpl final : public RtlRunner, private VerilatedModel<Top, kTrace
       fall();
     }
     t.seconds = seconds_since(t0);
+    begin_cycle(-1);  // what follows is outside the image
     top_->poly_valid_i = 0;
     std::sort(t.mask_sets.begin(), t.mask_sets.end());
     return t;
