@@ -101,12 +101,12 @@ dependencies() {
 }
 
 # Interface of a port, from its direction and width (the --ports table): memories and tables
-# (> 64 Kbit) stay memories the kernel addresses (ap_memory: the frame memory, the segment memory,
+# (64 Kbit and more) stay memories the kernel addresses (ap_memory: the frame memory, the segment memory,
 # the mask memory, the colour and fog tables); records travel as one wide word (aggregated),
 # inputs without handshake (ap_none, valid with ap_start), outputs with a valid strobe (ap_vld;
 # ap_ovld for in-out); the block protocol is ap_ctrl_hs (start, done, idle, ready).
 interface_of() {  # direction bits
-  if [ "$2" -gt 65536 ]; then echo ap_memory
+  if [ "$2" -ge 65536 ]; then echo ap_memory
   elif [ "$1" = in ]; then echo ap_none
   elif [ "$1" = inout ]; then echo ap_ovld
   else echo ap_vld
@@ -208,7 +208,7 @@ removes only those, and leaves any other file (your notes) in place.
 
 Bits are the C++ record's bits: the concatenation of its fields in the order listed (arrays:
 elements x bits). Interfaces as \`run_vitis.tcl\` sets them: block protocol \`ap_ctrl_hs\`; ports
-over 64 Kbit (memories, tables) \`ap_memory\`; records aggregated into one word; inputs
+of 64 Kbit and more (memories, tables) \`ap_memory\`; records aggregated into one word; inputs
 \`ap_none\`, outputs \`ap_vld\`, in-out \`ap_ovld\`.
 
 | port | direction | C++ type | bits | fields (bits) |
@@ -241,10 +241,11 @@ $(echo "$headers" | sed 's/^/- `/; s/$/`/')
 EOF
 }
 
-# TOP's bundle, staged in $stage_root/TOP (nothing is written to OUTDIR yet).
-stage_top() {
+# TOP's bundle, staged in $stage_root/TOP (nothing is written to OUTDIR yet): first its files (the
+# headers, the tops, the vectors; the generated ones empty), which is all the check of its folder
+# needs, then the generated files (the port table needs the testbench compiled, the slow part).
+stage_top_files() {
   local f
-  vectors=$repo/verif/golden/hls/$top.vec
   staging=$stage_root/$top
   mkdir -p "$staging/src" "$staging/tb" "$staging/vectors"
   for f in $(dependencies); do
@@ -256,10 +257,15 @@ stage_top() {
       *) echo "tools/hls_export.sh: $f: a dependency outside hls/ and the testbench" >&2; exit 2 ;;
     esac
   done
-  cp "$vectors" "$staging/vectors/"
+  cp "$repo/verif/golden/hls/$top.vec" "$staging/vectors/"
+  touch "$staging/run_vitis.tcl" "$staging/run_catapult.tcl" "$staging/README.md"
+}
 
-  # The port table (the testbench prints it) for the README.
-  g++ -std=c++17 -O1 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
+stage_top_generated() {
+  vectors=$repo/verif/golden/hls/$top.vec
+  staging=$stage_root/$top
+  # The port table (the testbench prints it) for the README; -O0: it only prints the table.
+  g++ -std=c++17 -O0 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
   ports=$("$stage_root/tb_$top" --ports)
   rm -f "$stage_root/tb_$top"
   headers=$(cd "$staging" && find hls -name '*.hpp' | sort)
@@ -280,9 +286,10 @@ else
   folder_of() { echo "$out"; }
 fi
 for top in $selected; do
-  stage_top
+  stage_top_files
   of_check_install "$stage_root/$top" "$(folder_of "$top")" "$marker"
 done
+for top in $selected; do stage_top_generated; done
 
 if [ -d "$stage_root/.outdir" ]; then
   # OUTDIR's marker first, so that an interrupted run can be repeated; then one bundle per top.

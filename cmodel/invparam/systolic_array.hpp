@@ -39,6 +39,7 @@
 #include "common/stall_pattern.hpp"
 #include "hls/invparam/pixel_processor.hpp"
 #include "hls/invparam/records.hpp"
+#include "invparam/face_setup.hpp"
 
 namespace cig::invparam {
 
@@ -307,5 +308,24 @@ struct Throughput {
   double covered_limit_faces_per_s = 0;  // n -> infinity: m / (4 (m + 1) width t_t)
 };
 Throughput invparam_throughput(int m, double n, double width, int n_pp, int columns, double t_t_seconds);
+
+// The array's scene of a frame's setup (face_setup.hpp): every polyhedron an object, the
+// background code 0xffffff (no face: face codes are indices in the setup's face list).
+template <int W>
+InvparamScene<W> scene_of_setup(const InvparamSetup<W>& setup) {
+  InvparamScene<W> s;
+  s.eps = setup.eps;
+  s.background = hls::ParCode(0xffffff);
+  int first = 0;
+  for (int o = 0; o < setup.faces->objects; ++o) {
+    ObjectSpan span;
+    span.first_face = first;
+    span.face_count = setup.faces->object_faces[o];
+    first += span.face_count;
+    s.objects.push_back(span);
+  }
+  for (int f = 0; f < first; ++f) s.faces.push_back(setup.faces->face[f]);
+  return s;
+}
 
 }  // namespace cig::invparam

@@ -99,7 +99,7 @@ const IpInput& polyhedra_ip_input() {
     nlohmann::ordered_json rep;
     const cig::ScreenFrame f = pipeline.geometry(0, 1, rep);
     const cig::InvparamSetup<64> setup = cig::invparam_setup<64>(f, cig::InvparamLattice{64, 0});
-    const cig::invparam::InvparamScene<64> s = cig::cosim::invparam_scene_of(setup);
+    const cig::invparam::InvparamScene<64> s = cig::invparam::scene_of_setup(setup);
     IpInput in;
     in.columns = 64;
     in.stream = cig::invparam::build_frame_stream(s, in.columns, 64, cig::invparam::StreamMode::kFull);

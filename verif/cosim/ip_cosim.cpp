@@ -11,7 +11,7 @@ class IpFrameCosimImpl final : public IpFrameCosim {
       : lattice_{rtl.n_pp(), 0}, cosim_(rtl, hls::Word<W>(invparam_eps_code(lattice_.size()))) {}
   IpFrameResult run(const ScreenFrame& frame, const invparam::ArrayPacing& pacing) override {
     const InvparamSetup<W> setup = invparam_setup<W>(frame, lattice_);
-    const invparam::InvparamScene<W> scene = invparam_scene_of(setup);
+    const invparam::InvparamScene<W> scene = invparam::scene_of_setup(setup);
     const int columns = lattice_.size();
     IpFrameResult r = cosim_.run_frame(stream(scene), columns, pacing);
     r.faces = std::int64_t(scene.faces.size());
@@ -19,7 +19,7 @@ class IpFrameCosimImpl final : public IpFrameCosim {
   }
   std::int64_t model_cycles(const ScreenFrame& frame, const invparam::ArrayPacing& pacing) const override {
     const InvparamSetup<W> setup = invparam_setup<W>(frame, lattice_);
-    return cosim_.model_cycles(stream(invparam_scene_of(setup)), lattice_.size(), pacing);
+    return cosim_.model_cycles(stream(invparam::scene_of_setup(setup)), lattice_.size(), pacing);
   }
 
  private:

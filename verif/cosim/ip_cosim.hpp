@@ -301,25 +301,6 @@ std::int64_t ip_rtl_run_frame(IpRtl& rtl, const std::vector<invparam::StreamCode
 
 // ---- Frames of a scene (ip_cosim.cpp) ---------------------------------------------------------
 
-// The array's scene of a frame's setup: every polyhedron an object, full streaming, the
-// background code 0xffffff (no face: face codes are indices in the setup's face list).
-template <int W>
-invparam::InvparamScene<W> invparam_scene_of(const InvparamSetup<W>& setup) {
-  invparam::InvparamScene<W> s;
-  s.eps = setup.eps;
-  s.background = hls::ParCode(0xffffff);
-  int first = 0;
-  for (int o = 0; o < setup.faces->objects; ++o) {
-    invparam::ObjectSpan span;
-    span.first_face = first;
-    span.face_count = setup.faces->object_faces[o];
-    first += span.face_count;
-    s.objects.push_back(span);
-  }
-  for (int f = 0; f < first; ++f) s.faces.push_back(setup.faces->face[f]);
-  return s;
-}
-
 // Frames (ScreenFrame, stage B's polyhedra) through one configuration, back to back: each set up on
 // an N_PP x N_PP lattice (L = N_PP: a PP per sample of a column, N_PP columns). W from the model.
 class IpFrameCosim {

@@ -138,7 +138,7 @@ InvparamScene<W> geometric_scene(const std::vector<EyePolyhedron>& polyhedra, in
   f.raster = n_pp;
   f.tan_half_fov = 0.8;
   f.polyhedra = polyhedra;
-  return invparam_scene_of(invparam_setup<W>(f, InvparamLattice{n_pp, 0}));
+  return invparam::scene_of_setup(invparam_setup<W>(f, InvparamLattice{n_pp, 0}));
 }
 
 // Word-level faces grazed by samples: tau exactly 0 on a column (an entry face) and on a row (an

@@ -145,23 +145,6 @@ struct InputRecorder {
   void on_freeze(std::int64_t) {}
 };
 
-// The array's scene of a frame's setup: every polyhedron an object, background code 0xffffff.
-invparam::InvparamScene<W> array_scene(const InvparamSetup<W>& setup) {
-  invparam::InvparamScene<W> s;
-  s.eps = setup.eps;
-  s.background = hls::ParCode(0xffffff);
-  int first = 0;
-  for (int o = 0; o < setup.faces->objects; ++o) {
-    invparam::ObjectSpan span;
-    span.first_face = first;
-    span.face_count = setup.faces->object_faces[o];
-    first += span.face_count;
-    s.objects.push_back(span);
-  }
-  for (int f = 0; f < first; ++f) s.faces.push_back(setup.faces->face[f]);
-  return s;
-}
-
 // The events of one PP clock, one bit each: what the windows must hold between them.
 constexpr unsigned kBubble = 1u << 0;         // Ctrl valid low
 constexpr unsigned kBubbleInToken = 1u << 1;  // ... inside a token
@@ -257,7 +240,7 @@ void write_pixel_processor(const std::string& dir, const Frames& f) {
   const InvparamLattice lattice{16, 0};
   const InvparamSetup<W> setup = invparam_setup<W>(f.awkward, lattice);
   const int n = setup.size;
-  const auto stream = invparam::build_frame_stream(array_scene(setup), n, n, invparam::StreamMode::kFull);
+  const auto stream = invparam::build_frame_stream(invparam::scene_of_setup(setup), n, n, invparam::StreamMode::kFull);
   unsigned covered = 0;
   for (int pp : {8, n - 1}) {
     std::vector<PpInput> inputs;
