@@ -8,11 +8,13 @@ unchanged) nor in the source tree's scenes/.
 
 usage: check_output_collisions.py CIG SOURCE WORK CASE
        check_output_collisions.py --list [rtl]     the case names, ';'-separated (rtl: with cosim's)"""
-import hashlib
 import os
 import shutil
 import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from folder_snapshot import snapshot  # noqa: E402
 
 # name: (command line, run in WORK; the text stderr must contain). SRC stands for the source tree,
 # '' for an empty argument.
@@ -86,19 +88,6 @@ COSIM_CASES = {
 def fail(msg):
     print("FAIL: " + msg)
     sys.exit(1)
-
-
-def snapshot(root):
-    """Every file and folder under root: relative path -> digest of the bytes (None: a folder)."""
-    found = {}
-    for folder, dirs, files in os.walk(root):
-        for d in dirs:
-            found[os.path.relpath(os.path.join(folder, d), root)] = None
-        for f in files:
-            path = os.path.join(folder, f)
-            with open(path, "rb") as fh:
-                found[os.path.relpath(path, root)] = hashlib.sha256(fh.read()).hexdigest()
-    return found
 
 
 def prepare(source, work):

@@ -9,27 +9,18 @@ exit status 2, the message, and that the folder is unchanged afterwards.
   synth_home            tools/synth_report.sh on $HOME (a temporary folder)
 
 usage: check_tool_folders.py SOURCE WORK CASE   (WORK: a scratch folder outside SOURCE)"""
-import hashlib
 import os
 import shutil
 import subprocess
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from folder_snapshot import snapshot  # noqa: E402
+
 
 def fail(msg):
     print("FAIL: " + msg)
     sys.exit(1)
-
-
-def snapshot(root):
-    found = {}
-    for folder, dirs, files in os.walk(root):
-        for d in dirs:
-            found[os.path.relpath(os.path.join(folder, d), root)] = None
-        for f in files:
-            with open(os.path.join(folder, f), "rb") as fh:
-                found[os.path.relpath(os.path.join(folder, f), root)] = hashlib.sha256(fh.read()).hexdigest()
-    return found
 
 
 def main():

@@ -1,13 +1,11 @@
-# ctest hls_export.bundle.TOP: exports TOP's bundle to OUT (outside the tree), then builds its
-# testbench with the system compiler from the bundle alone, in both type configurations, and
-# replays the vectors from inside the bundle (the testbench's default path). README_EXPECT: text the
-# bundle's README.md must hold (a port's row), or empty.
-file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${EXPORT} ${TOP} ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "hls_export.sh ${TOP} failed (${rc}): ${err}")
+# ctest hls_export.bundle.TOP: TOP's bundle, exported to OUT (outside the tree) by
+# `tools/hls_export.sh all` (the fixture hls_export.safety.all), built with the system compiler
+# from the bundle alone, in both type configurations, into BUILD, and its vectors replayed from
+# inside the bundle (the testbench's default path). README_EXPECT: text the bundle's README.md
+# must hold (a port's row), or empty.
+if(NOT EXISTS ${OUT}/.cig-hls-bundle)
+  message(FATAL_ERROR "${OUT}: no bundle (hls_export.safety.all exports every top there)")
 endif()
-message(STATUS "${out}")
 foreach(f README.md run_vitis.tcl run_catapult.tcl src/${TOP}.cpp tb/tb_${TOP}.cpp vectors/${TOP}.vec)
   if(NOT EXISTS ${OUT}/${f})
     message(FATAL_ERROR "the bundle has no ${f}")
@@ -20,7 +18,8 @@ if(NOT README_EXPECT STREQUAL "")
     message(FATAL_ERROR "the bundle's README.md does not state: ${README_EXPECT}")
   endif()
 endif()
-file(MAKE_DIRECTORY ${OUT}-build)
+file(REMOVE_RECURSE ${BUILD})
+file(MAKE_DIRECTORY ${BUILD})
 foreach(config native systemc)
   set(flags -std=c++17 -O1 -I.)
   set(libs)
@@ -28,7 +27,7 @@ foreach(config native systemc)
     list(APPEND flags -DCIG_HLS_SYSTEMC)
     set(libs -lsystemc)
   endif()
-  set(exe ${OUT}-build/tb_${TOP}_${config})
+  set(exe ${BUILD}/tb_${TOP}_${config})
   execute_process(COMMAND g++ ${flags} tb/tb_${TOP}.cpp src/${TOP}.cpp ${libs} -o ${exe}
     WORKING_DIRECTORY ${OUT} RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -40,4 +39,4 @@ foreach(config native systemc)
   endif()
   message(STATUS "${config}: ${out}")
 endforeach()
-file(REMOVE_RECURSE ${OUT} ${OUT}-build)
+file(REMOVE_RECURSE ${BUILD})

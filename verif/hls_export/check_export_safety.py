@@ -12,11 +12,18 @@ user's file in place with its content:
   twice       two exports into one folder keep a user file added in between, remove a file the
               marker lists that the new bundle lacks, and refuse a file the marker does not list
 
-usage: check_export_safety.py EXPORT REPO WORK CASE   (WORK: a scratch folder outside REPO)"""
+  all         every top into KEEP (left there: the hls_export.bundle.* tests build from it), then
+              a copy with a user's file and a marker that no longer lists one file: refused, unchanged
+
+usage: check_export_safety.py EXPORT REPO WORK CASE [KEEP]   (WORK: a scratch folder outside REPO)"""
 import os
 import shutil
 import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+from folder_snapshot import snapshot  # noqa: E402
 
 TOP = "overload_threshold_top"  # the smallest bundle
 BUNDLE_NAMES = [".cig-hls-bundle", "README.md", "run_vitis.tcl", "run_catapult.tcl", "hls", "src", "tb", "vectors"]
@@ -174,20 +181,15 @@ def case_twice(export, repo, work):
     print("twice: user files kept, the stale file removed, an unlisted file refused")
 
 
-def snapshot(folder):
-    found = {}
-    for root, _, names in os.walk(folder):
-        for n in names:
-            path = os.path.join(root, n)
-            found[os.path.relpath(path, folder)] = read(path)
-    return found
-
-
-def case_all(export, repo, work):
-    out = os.path.join(work, "bundles")
-    r = run([export, "all", out])
+def case_all(export, repo, work, keep):
+    # The export of every top stays in KEEP for the hls_export.bundle.* tests (their fixture); the
+    # refused second run works on a copy.
+    shutil.rmtree(keep, ignore_errors=True)  # the fixture's own folder, written by this test
+    r = run([export, "all", keep])
     if r.returncode != 0:
         fail(f"all: exit {r.returncode}: {r.stderr}")
+    out = os.path.join(work, "bundles")
+    shutil.copytree(keep, out, symlinks=True)
     with open(os.path.join(out, ".cig-hls-bundle")) as f:
         outer = f.read().splitlines()
     tops = sorted(line[7:] for line in outer if line.startswith("bundle "))
@@ -212,6 +214,7 @@ def case_all(export, repo, work):
 
 def main():
     export, repo, work, case = sys.argv[1:5]
+    keep = os.path.realpath(sys.argv[5]) if len(sys.argv) > 5 else os.path.join(os.path.realpath(work), "all")
     repo, work = os.path.realpath(repo), os.path.realpath(work)
     if work == repo or work.startswith(repo + os.sep):
         fail(f"WORK {work} must lie outside the repository {repo}")
@@ -219,10 +222,13 @@ def main():
     os.makedirs(work)
     cases = {"help": case_help, "not_empty": case_not_empty, "repo_root": case_repo_root,
              "repo_parent": case_repo_parent, "home": case_home, "file": case_file, "twice": case_twice,
-             "all": case_all}
+             "all": None}
     if case not in cases:
         fail("unknown case " + case)
-    cases[case](export, repo, work)
+    if case == "all":
+        case_all(export, repo, work, keep)
+    else:
+        cases[case](export, repo, work)
     shutil.rmtree(work, ignore_errors=True)
 
 
