@@ -169,7 +169,9 @@ EngineSettings parse_engine_options(const std::string& engine, const std::vector
                                     const std::map<std::string, std::string>& params) {
   EngineSettings settings;
   for (const EngineOptionSpec& spec : specs) settings.values()[spec.key] = spec.default_value;
-  for (const auto& [key, value] : params) {
+  for (const auto& param : params) {
+    const std::string& key = param.first;  // a named reference: a lambda may not capture a binding (C++17)
+    const std::string& value = param.second;
     const auto spec = std::find_if(specs.begin(), specs.end(), [&](const EngineOptionSpec& s) { return s.key == key; });
     if (spec == specs.end()) {
       std::vector<std::string> takes;
