@@ -13,8 +13,9 @@
 #   run_catapult.tcl         Catapult HLS: the same steps
 #   README.md                the top, its ports and their bit widths, how to build and run
 # The testbench builds from the folder alone:
-#   g++ -std=c++17 -I. tb/tb_TOP.cpp src/TOP.cpp -o tb && ./tb              (native types)
+#   g++ -std=c++14 -I. tb/tb_TOP.cpp src/TOP.cpp -o tb && ./tb              (native types: C++14, as the HLS tools)
 #   g++ -std=c++17 -DCIG_HLS_SYSTEMC -I. tb/tb_TOP.cpp src/TOP.cpp -lsystemc -o tb && ./tb
+#     (SystemC types: the standard Debian's libsystemc was built with; its headers check it at link time)
 # and exits 0 when every vector matches, 1 on a difference, 2 on a missing or malformed vector file.
 #
 # OUTDIR is new, empty, or a folder this script wrote before: every folder it writes holds a marker,
@@ -95,7 +96,7 @@ marker_header() {  # top [extra lines]
 dependencies() {
   local flags
   for flags in "" "-DCIG_HLS_SYSTEMC"; do
-    g++ -std=c++17 $flags -I"$repo" -I"$repo/verif/hls_export" -MM -MG \
+    g++ -std=c++14 $flags -I"$repo" -I"$repo/verif/hls_export" -MM -MG \
       "$tb_dir/tb_$top.cpp" "$repo/verif/hls_export/syn/$top.cpp"
   done | tr ' \\' '\n\n' | grep -v ':$' | grep -v '^$' | sort -u
 }
@@ -131,8 +132,8 @@ write_vitis() {
 set here [file normalize [file dirname [info script]]]
 open_project -reset proj_$top
 set_top $top
-add_files \$here/src/$top.cpp -cflags "-std=c++17 -I\$here"
-add_files -tb \$here/tb/tb_$top.cpp -cflags "-std=c++17 -I\$here"
+add_files \$here/src/$top.cpp -cflags "-std=c++14 -I\$here"
+add_files -tb \$here/tb/tb_$top.cpp -cflags "-std=c++14 -I\$here"
 open_solution -reset solution1 -flow_target vivado
 set_part {xcvu9p-flga2104-2-i}
 create_clock -period 10 -name default
@@ -166,7 +167,7 @@ write_catapult() {
 # (tb/vector_io.hpp, CIG_TB_DESIGN) and one testbench checks the C++ and the RTL.
 set here [file normalize [file dirname [info script]]]
 project new -name proj_$top -directory \$here/catapult
-options set Input/CppStandard c++17
+options set Input/CppStandard c++14
 options set Input/SearchPath \$here -append
 flow package require /SCVerify
 flow package option set /SCVerify/INVOKE_ARGS "\$here/vectors/$top.vec"
@@ -218,12 +219,13 @@ $ports
 ## Build and run the testbench
 
 \`\`\`
-g++ -std=c++17 -O1 -I. tb/tb_$top.cpp src/$top.cpp -o tb_$top && ./tb_$top
+g++ -std=c++14 -O1 -I. tb/tb_$top.cpp src/$top.cpp -o tb_$top && ./tb_$top
 g++ -std=c++17 -O1 -DCIG_HLS_SYSTEMC -I. tb/tb_$top.cpp src/$top.cpp -lsystemc -o tb_$top && ./tb_$top
 \`\`\`
 
-The second line maps the bit-accurate types onto SystemC's \`sc_int\`/\`sc_uint\` (Debian:
-libsystemc-dev); both must pass. Exit status: 0 every vector matches, 1 a difference (each
+The first is C++14, what Vitis HLS and Catapult compile. The second maps the bit-accurate types
+onto SystemC's \`sc_int\`/\`sc_uint\` (Debian: libsystemc-dev) and takes C++17, the standard
+that library was built with (SystemC's headers check it when linking); both must pass. Exit status: 0 every vector matches, 1 a difference (each
 differing vector and its first differing field are printed), 2 a missing or malformed vector
 file. \`./tb_$top --ports\` prints the table above; \`./tb_$top FILE\` replays another file.
 
@@ -265,7 +267,7 @@ stage_top_generated() {
   vectors=$repo/verif/golden/hls/$top.vec
   staging=$stage_root/$top
   # The port table (the testbench prints it) for the README; -O0: it only prints the table.
-  g++ -std=c++17 -O0 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
+  g++ -std=c++14 -O0 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
   ports=$("$stage_root/tb_$top" --ports)
   rm -f "$stage_root/tb_$top"
   headers=$(cd "$staging" && find hls -name '*.hpp' | sort)

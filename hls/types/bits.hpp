@@ -112,7 +112,7 @@ class Int {
 
   CIG_HLS_CONSTEXPR Int() = default;  // zero
   // From a C++ integer: keeps the low W bits (wrap).
-  template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+  template <class T, class = std::enable_if_t<std::is_integral<T>::value>>
   CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit Int(T x) {
     s_.set(static_cast<std::int64_t>(x));
   }
@@ -149,7 +149,7 @@ class UInt {
   static constexpr std::uint64_t max_value = detail::unsigned_max(W);
 
   CIG_HLS_CONSTEXPR UInt() = default;  // zero
-  template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+  template <class T, class = std::enable_if_t<std::is_integral<T>::value>>
   CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit UInt(T x) {
     s_.set(static_cast<std::uint64_t>(x));
   }
@@ -165,8 +165,8 @@ class UInt {
   template <int Hi, int Lo>
   CIG_HLS_CONSTEXPR UInt<Hi - Lo + 1> slice() const {
     static_assert(Lo >= 0 && Hi >= Lo && Hi < W, "slice<Hi, Lo> out of range");
-    if constexpr (Hi == W - 1) return UInt<Hi - Lo + 1>::exact(value() >> Lo);  // the top bits
-    else return UInt<Hi - Lo + 1>(value() >> Lo);
+    if (Hi == W - 1) return UInt<Hi - Lo + 1>::exact(value() >> Lo);  // the top bits
+    return UInt<Hi - Lo + 1>(value() >> Lo);
   }
   // Sets bit i to b (returns the new value; the type is a value type).
   CIG_HLS_CONSTEXPR UInt with_bit(int i, bool b) const {
@@ -198,13 +198,13 @@ struct is_hls_int<UInt<W>> : std::true_type {};
 // Low V bits (two's complement wrap); a width at least as wide keeps the value as it is.
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<V> wrap(const Int<W>& x) {
-  if constexpr (V >= W) return Int<V>::exact(x.value());
-  else return Int<V>(x.value());
+  if (V >= W) return Int<V>::exact(x.value());
+  return Int<V>(x.value());
 }
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<V> wrap(const UInt<W>& x) {
-  if constexpr (V > W) return Int<V>::exact(static_cast<std::int64_t>(x.value()));
-  else return Int<V>(x.value());
+  if (V > W) return Int<V>::exact(static_cast<std::int64_t>(x.value()));
+  return Int<V>(x.value());
 }
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> wrap_unsigned(const Int<W>& x) {
@@ -212,31 +212,30 @@ CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> wrap_unsigned(const Int<W>& x) {
 }
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> wrap_unsigned(const UInt<W>& x) {
-  if constexpr (V >= W) return UInt<V>::exact(x.value());
-  else return UInt<V>(x.value());
+  if (V >= W) return UInt<V>::exact(x.value());
+  return UInt<V>(x.value());
 }
 
 // Clamped to the range of V bits.
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<V> saturate(const Int<W>& x) {
   const std::int64_t v = x.value();
-  if constexpr (V >= W) return Int<V>::exact(v);
-  else return Int<V>::exact(v < Int<V>::min_value ? Int<V>::min_value : v > Int<V>::max_value ? Int<V>::max_value : v);
+  if (V >= W) return Int<V>::exact(v);
+  return Int<V>::exact(v < Int<V>::min_value ? Int<V>::min_value : v > Int<V>::max_value ? Int<V>::max_value : v);
 }
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> saturate_unsigned(const Int<W>& x) {
   const std::int64_t v = x.value();
-  if constexpr (V >= W - 1) return UInt<V>::exact(v < 0 ? 0 : static_cast<std::uint64_t>(v));
-  else
-    return UInt<V>::exact(v < 0                                                ? 0
-                          : static_cast<std::uint64_t>(v) > UInt<V>::max_value ? UInt<V>::max_value
-                                                                               : static_cast<std::uint64_t>(v));
+  if (V >= W - 1) return UInt<V>::exact(v < 0 ? 0 : static_cast<std::uint64_t>(v));
+  return UInt<V>::exact(v < 0                                                ? 0
+                        : static_cast<std::uint64_t>(v) > UInt<V>::max_value ? UInt<V>::max_value
+                                                                             : static_cast<std::uint64_t>(v));
 }
 template <int V, int W>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE UInt<V> saturate_unsigned(const UInt<W>& x) {
   const std::uint64_t v = x.value();
-  if constexpr (V >= W) return UInt<V>::exact(v);
-  else return UInt<V>::exact(v > UInt<V>::max_value ? UInt<V>::max_value : v);
+  if (V >= W) return UInt<V>::exact(v);
+  return UInt<V>::exact(v > UInt<V>::max_value ? UInt<V>::max_value : v);
 }
 
 // Reinterpretation of the same W bits.
@@ -402,34 +401,41 @@ CIG_HLS_CONSTEXPR CIG_HLS_INLINE Int<detail::max_width(A, B)> operator^(const In
 // ---- Comparisons (any widths, any signedness: compared as mathematical integers) ---------------------
 
 namespace detail {
-// a < b and a == b as mathematical integers. Unsigned values of 64 bits may exceed int64, so a
-// signed and an unsigned operand compare through the sign first; any narrower unsigned value
-// fits int64 and compares directly.
+// a < b and a == b as mathematical integers, chosen by the operands' value types (int64 for Int,
+// uint64 for UInt). Unsigned values of 64 bits may exceed int64, so a signed and an unsigned
+// operand compare through the sign first; any narrower unsigned value fits int64 and compares
+// directly.
+template <int WA, int WB, class V>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool less_values(V a, V b) {
+  return a < b;
+}
+template <int WA, int WB>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool less_values(std::int64_t a, std::uint64_t b) {
+  if (WB < 64) return a < static_cast<std::int64_t>(b);
+  return a < 0 || static_cast<std::uint64_t>(a) < b;
+}
+template <int WA, int WB>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool less_values(std::uint64_t a, std::int64_t b) {
+  if (WA < 64) return static_cast<std::int64_t>(a) < b;
+  return !(b < 0 || static_cast<std::uint64_t>(b) <= a);
+}
+template <class V>
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool equal_values(V a, V b) {
+  return a == b;
+}
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool equal_values(std::int64_t a, std::uint64_t b) {
+  return a >= 0 && static_cast<std::uint64_t>(a) == b;
+}
+CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool equal_values(std::uint64_t a, std::int64_t b) {
+  return b >= 0 && static_cast<std::uint64_t>(b) == a;
+}
 template <class A, class B>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool less(const A& a, const B& b) {
-  using Va = decltype(a.value());
-  using Vb = decltype(b.value());
-  if constexpr (std::is_same_v<Va, Vb>) {
-    return a.value() < b.value();
-  } else if constexpr (std::is_same_v<Va, std::int64_t>) {
-    if constexpr (B::width < 64) return a.value() < static_cast<std::int64_t>(b.value());
-    else return a.value() < 0 || static_cast<std::uint64_t>(a.value()) < b.value();
-  } else {
-    if constexpr (A::width < 64) return static_cast<std::int64_t>(a.value()) < b.value();
-    else return !(b.value() < 0 || static_cast<std::uint64_t>(b.value()) <= a.value());
-  }
+  return less_values<A::width, B::width>(a.value(), b.value());
 }
 template <class A, class B>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE bool equal(const A& a, const B& b) {
-  using Va = decltype(a.value());
-  using Vb = decltype(b.value());
-  if constexpr (std::is_same_v<Va, Vb>) {
-    return a.value() == b.value();
-  } else if constexpr (std::is_same_v<Va, std::int64_t>) {
-    return a.value() >= 0 && static_cast<std::uint64_t>(a.value()) == b.value();
-  } else {
-    return b.value() >= 0 && static_cast<std::uint64_t>(b.value()) == a.value();
-  }
+  return equal_values(a.value(), b.value());
 }
 }  // namespace detail
 

@@ -13,8 +13,10 @@
 #endif
 
 #define CIG_HLS_BEGIN_NAMESPACE \
-  namespace cig::hls {          \
+  namespace cig {               \
+  namespace hls {               \
   inline namespace CIG_HLS_ABI {
 #define CIG_HLS_END_NAMESPACE \
+  }                           \
   }                           \
   }

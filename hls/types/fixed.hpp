@@ -64,15 +64,11 @@ CIG_HLS_CONSTEXPR inline std::uint64_t overflow_unsigned(std::int64_t v, int w, 
 template <class Src, int To, Quant Q>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::int64_t requantize_to(std::int64_t raw) {
   constexpr int from = Src::frac_bits;
-  if constexpr (To >= from) {
-    return shift_left(raw, To - from);
-  } else if constexpr (from - To >= 63 || Src::width >= 63 || Q == Quant::kRoundEven) {
-    return requantize(raw, from, To, Q);
-  } else if constexpr (Q == Quant::kTrunc) {
-    return raw >> (from - To);
-  } else {
-    return (raw + (std::int64_t{1} << (from - To - 1))) >> (from - To);
-  }
+  constexpr int down = To < from && from - To < 63 ? from - To : 1;  // the right shift, valid in every branch
+  if (To >= from) return shift_left(raw, To - from);
+  if (from - To >= 63 || Src::width >= 63 || Q == Quant::kRoundEven) return requantize(raw, from, To, Q);
+  if (Q == Quant::kTrunc) return raw >> down;
+  return (raw + (std::int64_t{1} << (down - 1))) >> down;
 }
 
 // Bits a value of format Src needs (sign included for a signed target) after requantize_to<To, Q>:
@@ -89,15 +85,15 @@ constexpr int requantized_bits() {
 // rule would leave every value as it is).
 template <class Src, int To, Quant Q, int W, Overflow O>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::int64_t overflow_signed_to(std::int64_t v) {
-  if constexpr (requantized_bits<Src, To, Q, true>() <= W) return v;
-  else return overflow_signed(v, W, O);
+  if (requantized_bits<Src, To, Q, true>() <= W) return v;
+  return overflow_signed(v, W, O);
 }
 template <class Src, int To, Quant Q, int W, Overflow O>
 CIG_HLS_CONSTEXPR CIG_HLS_INLINE std::uint64_t overflow_unsigned_to(std::int64_t v) {
   constexpr bool fits = requantized_bits<Src, To, Q, false>() <= W;
-  if constexpr (!Src::is_signed && fits) return static_cast<std::uint64_t>(v);
-  else if constexpr (O == Overflow::kSat && fits) return v < 0 ? 0 : static_cast<std::uint64_t>(v);
-  else return overflow_unsigned(v, W, O);
+  if (!Src::is_signed && fits) return static_cast<std::uint64_t>(v);
+  if (O == Overflow::kSat && fits) return v < 0 ? 0 : static_cast<std::uint64_t>(v);
+  return overflow_unsigned(v, W, O);
 }
 
 }  // namespace detail
@@ -328,9 +324,8 @@ CIG_HLS_CONSTEXPR R fixed_div(const N& num, const D& den) {
   if (s >= 0) n = static_cast<std::int64_t>(static_cast<std::uint64_t>(n) << s);
   else d = static_cast<std::int64_t>(static_cast<std::uint64_t>(d) << (-s));
   if (d == 0) {
-    if constexpr (R::is_signed)
-      return R::from_raw_value(n < 0 ? detail::signed_min(R::width) : detail::signed_max(R::width));
-    else return R::from_raw_value(n < 0 ? 0 : detail::unsigned_max(R::width));
+    if (R::is_signed) return R::from_raw_value(n < 0 ? detail::signed_min(R::width) : detail::signed_max(R::width));
+    return R::from_raw_value(n < 0 ? 0 : detail::unsigned_max(R::width));
   }
   if (d < 0) {
     n = -n;
@@ -347,8 +342,8 @@ CIG_HLS_CONSTEXPR R fixed_div(const N& num, const D& den) {
   if (R::quant == Quant::kRoundEven &&
       (twice_r > static_cast<std::uint64_t>(d) || (twice_r == static_cast<std::uint64_t>(d) && (q & 1))))
     q += 1;
-  if constexpr (R::is_signed) return R::from_raw_value(detail::overflow_signed(q, R::width, R::overflow));
-  else return R::from_raw_value(detail::overflow_unsigned(q, R::width, R::overflow));
+  if (R::is_signed) return R::from_raw_value(detail::overflow_signed(q, R::width, R::overflow));
+  return R::from_raw_value(detail::overflow_unsigned(q, R::width, R::overflow));
 }
 
 CIG_HLS_END_NAMESPACE

@@ -49,10 +49,10 @@ class WideInt {
 
   CIG_HLS_CONSTEXPR WideInt() = default;  // zero
   // From a C++ integer: its low W bits.
-  template <class T, class = std::enable_if_t<std::is_integral_v<T>>>
+  template <class T, class = std::enable_if_t<std::is_integral<T>::value>>
   CIG_HLS_CONSTEXPR CIG_HLS_INLINE explicit WideInt(T x) {
     std::uint64_t hi = 0;
-    if constexpr (std::is_signed_v<T>) hi = x < 0 ? ~std::uint64_t{0} : 0;
+    if (std::is_signed<T>::value) hi = x < 0 ? ~std::uint64_t{0} : 0;
     set_bits(detail::wide_bits(hi, static_cast<std::uint64_t>(x)));
   }
   // The low W bits of the 128-bit two's complement value hi:lo.
@@ -63,14 +63,15 @@ class WideInt {
   }
   static CIG_HLS_CONSTEXPR CIG_HLS_INLINE WideInt max_code() {  // 0 then W - 1 ones
     constexpr std::uint64_t kOnes = ~std::uint64_t{0};
-    if constexpr (W > 65) return from_limbs(kOnes >> (129 - W), kOnes);
-    else if constexpr (W == 65) return from_limbs(0, kOnes);
-    else return from_limbs(0, kOnes >> (65 - W));
+    // The shifts of the branches not taken are clamped to 0, so every branch is valid for every W.
+    if (W > 65) return from_limbs(kOnes >> (W > 65 ? 129 - W : 0), kOnes);
+    if (W == 65) return from_limbs(0, kOnes);
+    return from_limbs(0, kOnes >> (W < 65 ? 65 - W : 0));
   }
   static CIG_HLS_CONSTEXPR CIG_HLS_INLINE WideInt min_code() {  // 1 then W - 1 zeros
     constexpr std::uint64_t kOnes = ~std::uint64_t{0};
-    if constexpr (W > 64) return from_limbs(kOnes << (W - 65), 0);
-    else return from_limbs(kOnes, kOnes << (W - 1));
+    if (W > 64) return from_limbs(kOnes << (W > 64 ? W - 65 : 0), 0);
+    return from_limbs(kOnes, kOnes << (W <= 64 ? W - 1 : 0));
   }
 
   // a + b wrapped to W bits.

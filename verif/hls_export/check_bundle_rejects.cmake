@@ -9,7 +9,7 @@ function(export_bundle)
   endif()
 endfunction()
 function(build_bundle result)
-  execute_process(COMMAND g++ -std=c++17 -O1 -I. tb/tb_${TOP}.cpp src/${TOP}.cpp -o ${OUT}/tb_check
+  execute_process(COMMAND g++ -std=c++14 -O1 -I. tb/tb_${TOP}.cpp src/${TOP}.cpp -o ${OUT}/tb_check
     WORKING_DIRECTORY ${OUT} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
   set(${result} ${rc} PARENT_SCOPE)
 endfunction()

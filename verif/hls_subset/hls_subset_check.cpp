@@ -1091,7 +1091,9 @@ class Checker {
     for (const auto& [id, rule] : kPoisoned) f << " " << id;
     f << "\n#include \"" << h.string() << "\"\n";
     j.args = {cxx.string(),
-              "-std=c++17",
+              "-std=c++14",  // the HLS tools' standard; a later construct is an error, rule later-standard
+              "-Werror=c++17-extensions",
+              "-Werror=c++20-extensions",
               "-D__SYNTHESIS__",
               "-UCIG_HLS_SYSTEMC",
               "-I" + (work / "poisoned").string(),
@@ -1204,12 +1206,16 @@ class Checker {
         ++suppressed;
         continue;
       }
+      // A construct of a later standard than C++14 (GCC names the standard it needs).
+      const char* rule = msg.find("c++17") != std::string::npos || msg.find("c++2") != std::string::npos
+                             ? "later-standard"
+                             : "compile";
       if (f == canon(j.tu)) {
-        add(j.header, 1, "compile", msg);
+        add(j.header, 1, rule, msg);
       } else if (hls_owned(f)) {
-        add(f, line, "compile", msg);
+        add(f, line, rule, msg);
       } else {
-        add(cf.empty() ? j.header : cf, cf.empty() ? 1 : cl, "compile",
+        add(cf.empty() ? j.header : cf, cf.empty() ? 1 : cl, rule,
             msg + " [in " + show(f) + ":" + std::to_string(line) + "]");
       }
     }

@@ -8,7 +8,8 @@
 void edge_generator_top(const cig::hls::FormattedPrimitive& in, cig::hls::UInt<4> raster_log2,
                         cig::hls::PolygonEdges<cig::hls::DefaultSegmentArith>& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct EdgeGeneratorTopCase {
   static constexpr const char* kTop = "edge_generator_top";
@@ -42,4 +43,5 @@ struct Fields<EdgeGeneratorTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -6,7 +6,8 @@
 #include "hls/pixel/sample_colour.hpp"
 #include "vector_io.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <>
 struct Fields<hls::RawVertex> {
@@ -46,4 +47,5 @@ struct Fields<hls::FogTable> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -7,7 +7,8 @@
 #include "hls/invparam/visibility.hpp"
 #include "vector_io.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <int W>
 struct Fields<hls::FaceSetup<W>> {
@@ -39,4 +40,5 @@ struct Fields<hls::InvparamSample<W>> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -5,7 +5,8 @@
 #include "hls/manager/records.hpp"
 #include "vector_io.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <>
 struct Fields<hls::ManagerChannel> {
@@ -37,4 +38,5 @@ struct Fields<hls::ManagerVisibility> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -4,7 +4,8 @@
 #include "fields_formatter.hpp"
 #include "hls/quadtree/records.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <class P>
 struct Fields<hls::QuadPolygon<P>> {
@@ -37,4 +38,5 @@ struct Fields<hls::QuadSetup<P>> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -6,7 +6,8 @@
 #include "hls/segment/records.hpp"
 #include "hls/segment/y_sorter.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <class P>
 struct Fields<hls::Edge<P>> {
@@ -59,4 +60,5 @@ struct Fields<hls::SegmentMemory<P, K>> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

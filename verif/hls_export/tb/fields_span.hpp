@@ -4,7 +4,8 @@
 #include "fields_formatter.hpp"
 #include "hls/formatter/span_pieces.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <>
 struct Fields<hls::SpanPiece> {
@@ -22,4 +23,5 @@ struct Fields<hls::SpanPieces> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

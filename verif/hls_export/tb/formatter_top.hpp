@@ -6,7 +6,8 @@
 
 void formatter_top(const cig::hls::RawPrimitive& in, cig::hls::FormattedPrimitive& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct FormatterTopCase {
   static constexpr const char* kTop = "formatter_top";
@@ -38,4 +39,5 @@ struct Fields<FormatterTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -10,7 +10,8 @@
 bool frame_memory_write_top(const cig::hls::PolygonEdges<cig::hls::DefaultSegmentArith>& e,
                             cig::hls::FrameMemory<cig::hls::DefaultSegmentArith>& m);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <class P>
 struct Fields<hls::FrameWord<P>> {
@@ -68,4 +69,5 @@ struct Fields<FrameMemoryWriteTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -10,7 +10,8 @@ void invparam_column_top(const cig::hls::InvparamFaces<cig::hls::kDefaultWordBit
                          const cig::hls::Word<cig::hls::kDefaultWordBits>& eps,
                          cig::hls::InvparamSample<cig::hls::kDefaultWordBits> out[cig::hls::kMaxSamplesPerColumn]);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct InvparamColumnTopCase {
   static constexpr const char* kTop = "invparam_column_top";
@@ -51,4 +52,5 @@ struct Fields<InvparamColumnTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

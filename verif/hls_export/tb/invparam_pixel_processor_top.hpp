@@ -12,7 +12,8 @@ cig::hls::PpOutputs<cig::hls::kPpTopWordBits> invparam_pixel_processor_top(
     cig::hls::PpState<cig::hls::kPpTopWordBits>& st, const cig::hls::Word<cig::hls::kPpTopWordBits>& input,
     const cig::hls::PpCtrl& ctrl);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <int W>
 struct Fields<hls::PpState<W>> {
@@ -89,4 +90,5 @@ struct Fields<InvparamPixelProcessorTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -10,7 +10,8 @@ int light_segments_top(const cig::hls::FormattedPrimitive& light, cig::hls::UInt
                        cig::hls::UInt<3> channel,
                        cig::hls::Segment<cig::hls::DefaultSegmentArith> (&out)[cig::hls::kMaxLightSegments]);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct LightSegmentsTopCase {
   static constexpr const char* kTop = "light_segments_top";
@@ -50,4 +51,5 @@ struct Fields<LightSegmentsTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

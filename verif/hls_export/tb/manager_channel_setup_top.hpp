@@ -6,7 +6,8 @@
 
 void manager_channel_setup_top(const cig::hls::ManagerChannel& in, cig::hls::ManagerChannelSetup& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct ManagerChannelSetupTopCase {
   static constexpr const char* kTop = "manager_channel_setup_top";
@@ -38,4 +39,5 @@ struct Fields<ManagerChannelSetupTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

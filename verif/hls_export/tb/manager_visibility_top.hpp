@@ -8,7 +8,8 @@
 void manager_visibility_top(const cig::hls::ManagerChannelSetup& setup, const cig::hls::ManagerObject& obj,
                             cig::hls::ManagerVisibility& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct ManagerVisibilityTopCase {
   static constexpr const char* kTop = "manager_visibility_top";
@@ -42,4 +43,5 @@ struct Fields<ManagerVisibilityTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

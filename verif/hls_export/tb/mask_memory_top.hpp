@@ -9,7 +9,8 @@
 cig::hls::UInt<5> mask_memory_top(cig::hls::MaskMemory& m, cig::hls::UInt<4> level, cig::hls::UInt<10> x,
                                   cig::hls::UInt<10> y, cig::hls::UInt<2> child);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <>
 struct Fields<hls::MaskMemory> {
@@ -64,4 +65,5 @@ struct Fields<MaskMemoryTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

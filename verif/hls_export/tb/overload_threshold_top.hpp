@@ -7,7 +7,8 @@
 
 int overload_threshold_top(const cig::hls::OverloadCounts& c, int bank_capacity);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <>
 struct Fields<hls::OverloadCounts> {
@@ -51,4 +52,5 @@ struct Fields<OverloadThresholdTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

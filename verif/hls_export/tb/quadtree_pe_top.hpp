@@ -9,7 +9,8 @@ void quadtree_pe_top(const cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& w, 
                      cig::hls::UInt<4> raster_log2,
                      cig::hls::QuadChild<cig::hls::DefaultQuadArith> (&children)[cig::hls::kQuadChildren]);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct QuadtreePeTopCase {
   static constexpr const char* kTop = "quadtree_pe_top";
@@ -46,4 +47,5 @@ struct Fields<QuadtreePeTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

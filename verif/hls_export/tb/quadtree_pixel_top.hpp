@@ -15,7 +15,8 @@ cig::hls::PixelSampleMask quadtree_pixel_top(const cig::hls::QuadWindow<cig::hls
                                              const cig::hls::QuadLightCover<cig::hls::DefaultQuadArith>& lights,
                                              cig::hls::QuadPixelState<cig::hls::DefaultQuadArith>& st);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <class P>
 struct Fields<hls::QuadPixelState<P>> {
@@ -88,4 +89,5 @@ struct Fields<QuadtreePixelTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -8,7 +8,8 @@
 void quadtree_setup_top(const cig::hls::FormattedPrimitive& f, cig::hls::UInt<4> raster_log2,
                         cig::hls::QuadSetup<cig::hls::DefaultQuadArith>& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct QuadtreeSetupTopCase {
   static constexpr const char* kTop = "quadtree_setup_top";
@@ -42,4 +43,5 @@ struct Fields<QuadtreeSetupTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

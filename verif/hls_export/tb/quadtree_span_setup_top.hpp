@@ -10,7 +10,8 @@
 bool quadtree_span_setup_top(const cig::hls::FormattedPrimitive& f, const cig::hls::SpanPiece& piece,
                              cig::hls::UInt<4> raster_log2, cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& root);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct QuadtreeSpanSetupTopCase {
   static constexpr const char* kTop = "quadtree_span_setup_top";
@@ -50,4 +51,5 @@ struct Fields<QuadtreeSpanSetupTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

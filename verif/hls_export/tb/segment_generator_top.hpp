@@ -9,7 +9,8 @@ int segment_generator_top(const cig::hls::PolygonEdges<cig::hls::DefaultSegmentA
                           cig::hls::UInt<4> raster_log2, cig::hls::UInt<3> channel,
                           cig::hls::Segment<cig::hls::DefaultSegmentArith> (&out)[cig::hls::kMaxLines]);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct SegmentGeneratorTopCase {
   static constexpr const char* kTop = "segment_generator_top";
@@ -49,4 +50,5 @@ struct Fields<SegmentGeneratorTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

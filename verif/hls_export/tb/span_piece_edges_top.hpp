@@ -10,7 +10,8 @@
 void span_piece_edges_top(const cig::hls::FormattedPrimitive& in, const cig::hls::SpanPiece& piece,
                           cig::hls::UInt<4> raster_log2, cig::hls::PolygonEdges<cig::hls::DefaultSegmentArith>& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct SpanPieceEdgesTopCase {
   static constexpr const char* kTop = "span_piece_edges_top";
@@ -48,4 +49,5 @@ struct Fields<SpanPieceEdgesTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -7,7 +7,8 @@
 
 void span_pieces_top(const cig::hls::FormattedPrimitive& in, cig::hls::UInt<4> raster_log2, cig::hls::SpanPieces& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct SpanPiecesTopCase {
   static constexpr const char* kTop = "span_pieces_top";
@@ -41,4 +42,5 @@ struct Fields<SpanPiecesTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -17,23 +17,34 @@
 
 #include "vector_io.hpp"
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 // "name bits, name NxBits, ..." of a record (of an array's element); "" for a leaf.
 template <class T>
-std::string field_summary(const T& x) {
-  if constexpr (std::is_array_v<T>) return field_summary(x[0]);
-  else if constexpr (Leaf<T>::is) return "";
-  else {
-    FieldLister lister;
-    Fields<T>::visit(lister, x);
-    std::string s;
-    for (const FieldWidth& f : lister.fields) {
-      s += s.empty() ? "" : ", ";
-      s += f.name + " " + (f.count > 1 ? std::to_string(f.count) + "x" : "") + std::to_string(f.element_bits);
-    }
-    return s;
+std::string field_summary(const T& x);
+template <class E, std::size_t N>
+std::string field_summary(const E (&x)[N], ArrayKind) {
+  return field_summary(x[0]);
+}
+template <class T>
+std::string field_summary(const T&, LeafKind) {
+  return "";
+}
+template <class T>
+std::string field_summary(const T& x, RecordKind) {
+  FieldLister lister;
+  Fields<T>::visit(lister, x);
+  std::string s;
+  for (const FieldWidth& f : lister.fields) {
+    s += s.empty() ? "" : ", ";
+    s += f.name + " " + (f.count > 1 ? std::to_string(f.count) + "x" : "") + std::to_string(f.element_bits);
   }
+  return s;
+}
+template <class T>
+std::string field_summary(const T& x) {
+  return field_summary(x, KindOf<T>{});
 }
 
 struct PortPrinter {
@@ -117,7 +128,8 @@ int testbench_main(int argc, char** argv) {
   return replay<Case>(file);
 }
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig
 
 // The testbench's main (CCS_MAIN under Catapult's SCVerify).
 #ifdef CCS_SCVERIFY

@@ -45,7 +45,8 @@ CIG_HLS_END_NAMESPACE
 #define CIG_TB_DESIGN(top) ::top
 #endif
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 // Fields<T>::visit(v, r) calls v(r.field, "field") for every field of record T, in a fixed order;
 // R is T or const T. Specialised per record in record_fields.hpp and per testbench case.
@@ -156,10 +157,28 @@ inline bool parse_decimal(const std::string& t, Int128 lo, Int128 hi, Int128& v)
   return true;
 }
 
+// What a value is to the walkers below (C++14: tag dispatch, the bundles' standard): an array, a
+// leaf (Leaf<T>::is) or a record (Fields<T>); a leaf wider than 64 bits or not.
+struct ArrayKind {};
+struct LeafKind {};
+struct RecordKind {};
+template <class T>
+using KindOf =
+    std::conditional_t<std::is_array<T>::value, ArrayKind, std::conditional_t<Leaf<T>::is, LeafKind, RecordKind>>;
+template <class T>
+using WideOf = std::integral_constant<bool, IsWideLeaf<T>::value>;
+
+template <class T>
+std::string leaf_token(const T& x, std::true_type /*wide*/) {
+  return decimal_of(Leaf<T>::raw(x));
+}
+template <class T>
+std::string leaf_token(const T& x, std::false_type /*wide*/) {
+  return std::to_string(Leaf<T>::raw(x));
+}
 template <class T>
 std::string leaf_token(const T& x) {
-  if constexpr (IsWideLeaf<T>::value) return decimal_of(Leaf<T>::raw(x));
-  else return std::to_string(Leaf<T>::raw(x));
+  return leaf_token(x, WideOf<T>{});
 }
 
 // ---- Writing --------------------------------------------------------------------------------------
@@ -171,15 +190,24 @@ class TextWriter {
   }
   template <class T>
   void write(const T& x) {
-    if constexpr (std::is_array_v<T>) write_array(x);
-    else if constexpr (Leaf<T>::is) {
-      text_ += ' ';
-      text_ += leaf_token(x);
-    } else Fields<T>::visit(*this, x);
+    write(x, KindOf<T>{});
   }
   const std::string& text() const { return text_; }
 
  private:
+  template <class T>
+  void write(const T& x, ArrayKind) {
+    write_array(x);
+  }
+  template <class T>
+  void write(const T& x, LeafKind) {
+    text_ += ' ';
+    text_ += leaf_token(x);
+  }
+  template <class T>
+  void write(const T& x, RecordKind) {
+    Fields<T>::visit(*this, x);
+  }
   template <class E, std::size_t N>
   void write_array(const E (&a)[N]) {
     text_ += " [";
@@ -215,9 +243,11 @@ std::string to_text(const T& x) {
 // Assigns a value or an array of them (arrays have no assignment).
 template <class T>
 void copy_value(T& to, const T& from) {
-  if constexpr (std::is_array_v<T>) {
-    for (std::size_t k = 0; k < std::extent_v<T>; ++k) copy_value(to[k], from[k]);
-  } else to = from;
+  to = from;
+}
+template <class E, std::size_t N>
+void copy_value(E (&to)[N], const E (&from)[N]) {
+  for (std::size_t k = 0; k < N; ++k) copy_value(to[k], from[k]);
 }
 
 // ---- Reading --------------------------------------------------------------------------------------
@@ -234,10 +264,7 @@ class TextReader {
   }
   template <class T>
   void read(T& x) {
-    if (!error_.empty()) return;
-    if constexpr (std::is_array_v<T>) read_array(x);
-    else if constexpr (Leaf<T>::is) read_leaf(x);
-    else Fields<T>::visit(*this, x);
+    if (error_.empty()) read(x, KindOf<T>{});
   }
   // After the record: every token used.
   void finish() {
@@ -257,32 +284,44 @@ class TextReader {
     return &tokens_[at_++];
   }
   template <class T>
-  void read_leaf(T& x) {
+  void read(T& x, ArrayKind) {
+    read_array(x);
+  }
+  template <class T>
+  void read(T& x, LeafKind) {
     const std::string* t = next();
-    if (!t) return;
+    if (t) read_leaf(x, *t, WideOf<T>{});
+  }
+  template <class T>
+  void read(T& x, RecordKind) {
+    Fields<T>::visit(*this, x);
+  }
+  template <class T>
+  void read_leaf(T& x, const std::string& t, std::true_type /*wide*/) {
+    const int w = Leaf<T>::width;
+    const Int128 hi = static_cast<Int128>((UInt128(1) << (w - 1)) - 1), lo = -hi - 1;
+    Int128 v = 0;
+    if (!parse_decimal(t, lo, hi, v)) return fail("'" + t + "' is not a signed " + std::to_string(w) + "-bit value");
+    Leaf<T>::set(x, v);
+  }
+  template <class T>
+  void read_leaf(T& x, const std::string& t, std::false_type /*wide*/) {
     char* end = nullptr;
     errno = 0;
-    if constexpr (IsWideLeaf<T>::value) {
-      const int w = Leaf<T>::width;
-      const Int128 hi = static_cast<Int128>((UInt128(1) << (w - 1)) - 1), lo = -hi - 1;
-      Int128 v = 0;
-      if (!parse_decimal(*t, lo, hi, v))
-        return fail("'" + *t + "' is not a signed " + std::to_string(w) + "-bit value");
-      Leaf<T>::set(x, v);
-    } else if constexpr (Leaf<T>::is_signed) {
-      const long long v = std::strtoll(t->c_str(), &end, 10);
+    if (Leaf<T>::is_signed) {
+      const long long v = std::strtoll(t.c_str(), &end, 10);
       const int w = Leaf<T>::width;
       const long long lo = w >= 64 ? std::numeric_limits<long long>::min() : -(1LL << (w - 1));
       const long long hi = w >= 64 ? std::numeric_limits<long long>::max() : (1LL << (w - 1)) - 1;
-      if (t->empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
-        return fail("'" + *t + "' is not a signed " + std::to_string(w) + "-bit value");
+      if (t.empty() || *end != '\0' || errno != 0 || v < lo || v > hi)
+        return fail("'" + t + "' is not a signed " + std::to_string(w) + "-bit value");
       Leaf<T>::set(x, v);
     } else {
-      const unsigned long long v = std::strtoull(t->c_str(), &end, 10);
+      const unsigned long long v = std::strtoull(t.c_str(), &end, 10);
       const int w = Leaf<T>::width;
       const unsigned long long hi = w >= 64 ? std::numeric_limits<unsigned long long>::max() : (1ULL << w) - 1;
-      if (t->empty() || (*t)[0] == '-' || *end != '\0' || errno != 0 || v > hi)
-        return fail("'" + *t + "' is not an unsigned " + std::to_string(w) + "-bit value");
+      if (t.empty() || t[0] == '-' || *end != '\0' || errno != 0 || v > hi)
+        return fail("'" + t + "' is not an unsigned " + std::to_string(w) + "-bit value");
       Leaf<T>::set(x, v);
     }
   }
@@ -324,19 +363,28 @@ class PathWriter {
   }
   template <class T>
   void write(const T& x) {
-    if constexpr (std::is_array_v<T>) {
-      for (std::size_t k = 0; k < std::extent_v<T>; ++k) {
-        const std::size_t n = path_.size();
-        path_ += "[" + std::to_string(k) + "]";
-        write(x[k]);
-        path_.resize(n);
-      }
-    } else if constexpr (Leaf<T>::is) leaves_.push_back({path_, leaf_token(x)});
-    else Fields<T>::visit(*this, x);
+    write(x, KindOf<T>{});
   }
   std::vector<std::pair<std::string, std::string>> leaves_;
 
  private:
+  template <class E, std::size_t N>
+  void write(const E (&x)[N], ArrayKind) {
+    for (std::size_t k = 0; k < N; ++k) {
+      const std::size_t n = path_.size();
+      path_ += "[" + std::to_string(k) + "]";
+      write(x[k]);
+      path_.resize(n);
+    }
+  }
+  template <class T>
+  void write(const T& x, LeafKind) {
+    leaves_.push_back({path_, leaf_token(x)});
+  }
+  template <class T>
+  void write(const T& x, RecordKind) {
+    Fields<T>::visit(*this, x);
+  }
   std::string path_;
 };
 
@@ -362,14 +410,25 @@ class WidthCounter {
   }
   template <class T>
   void write(const T& x) {
-    if constexpr (std::is_array_v<T>) {
-      WidthCounter element;
-      element.write(x[0]);
-      bits += element.bits * std::extent_v<T>;
-    } else if constexpr (Leaf<T>::is) bits += Leaf<T>::width;
-    else Fields<T>::visit(*this, x);
+    write(x, KindOf<T>{});
   }
   long long bits = 0;
+
+ private:
+  template <class E, std::size_t N>
+  void write(const E (&x)[N], ArrayKind) {
+    WidthCounter element;
+    element.write(x[0]);
+    bits += element.bits * static_cast<long long>(N);
+  }
+  template <class T>
+  void write(const T&, LeafKind) {
+    bits += Leaf<T>::width;
+  }
+  template <class T>
+  void write(const T& x, RecordKind) {
+    Fields<T>::visit(*this, x);
+  }
 };
 
 template <class T>
@@ -388,11 +447,11 @@ class FieldLister {
  public:
   template <class T>
   void operator()(const T& x, const char* name) {
-    long long count = 1;
-    if constexpr (std::is_array_v<T>) count = (long long)(sizeof(T) / sizeof(std::remove_all_extents_t<T>));
+    const long long count = std::is_array<T>::value ? (long long)(sizeof(T) / sizeof(std::remove_all_extents_t<T>)) : 1;
     fields.push_back({name, count, bits_of(x) / count});
   }
   std::vector<FieldWidth> fields;
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -15,7 +15,8 @@ int video_channel_top(cig::hls::UInt<10> line, cig::hls::UInt<4> raster_log2,
                       const cig::hls::VideoTables<cig::hls::DefaultSegmentArith>& t,
                       cig::hls::LineBuffer<cig::hls::DefaultSegmentArith>& w, cig::hls::PixelLine& out);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 template <class P>
 struct Fields<hls::VideoTables<P>> {
@@ -81,4 +82,5 @@ struct Fields<VideoChannelTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

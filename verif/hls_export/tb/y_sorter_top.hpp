@@ -9,7 +9,8 @@
 bool y_sorter_top(const cig::hls::Segment<cig::hls::DefaultSegmentArith>& s,
                   cig::hls::SegmentMemory<cig::hls::DefaultSegmentArith>& m);
 
-namespace cig::hls_tb {
+namespace cig {
+namespace hls_tb {
 
 struct YSorterTopCase {
   static constexpr const char* kTop = "y_sorter_top";
@@ -50,4 +51,5 @@ struct Fields<YSorterTopCase::Output> {
   }
 };
 
-}  // namespace cig::hls_tb
+}  // namespace hls_tb
+}  // namespace cig

@@ -19,8 +19,8 @@ constexpr int kAcceptedBig = 1'000;  // a digit separator is not a character lit
 
 struct AcceptedState {
   UInt<16> sum;
-  static constexpr int kLanes = 2;                          // class scope: not a static local
-  static AcceptedState zero() { return AcceptedState(); }   // static member function
+  static constexpr int kLanes = 2;                         // class scope: not a static local
+  static AcceptedState zero() { return AcceptedState(); }  // static member function
 };
 
 struct AcceptedNoCopy {
@@ -32,13 +32,15 @@ namespace accepted_detail {
 
 // Recursion over a template parameter is unrolled at compile time: each instantiation calls a
 // different function, so the call graph has no cycle.
+// (C++14: the end of the recursion is an overload, not an if constexpr.)
+CIG_HLS_CONSTEXPR int ones(std::integral_constant<int, 0>) { return 0; }
+template <int N>
+CIG_HLS_CONSTEXPR int ones(std::integral_constant<int, N>) {
+  return 1 + ones(std::integral_constant<int, N - 1>{});
+}
 template <int N>
 CIG_HLS_CONSTEXPR int ones() {
-  if constexpr (N == 0) {
-    return 0;
-  } else {
-    return 1 + ones<N - 1>();
-  }
+  return ones(std::integral_constant<int, N>{});
 }
 
 // A count-down loop bounded by the template parameter N.
@@ -59,7 +61,7 @@ inline UInt<16> accepted_top(const UInt<8> (&in)[kAcceptedTaps], int n, Accepted
     static int twice(int v) { return 2 * v; }  // a local class's static member function
   };
   const char* const tag = "while (1) { float x = *new double; }";  // a literal, not code
-  int new_count = 0, do_steps = 0, while_seen = 0;              // identifiers, not keywords
+  int new_count = 0, do_steps = 0, while_seen = 0;                 // identifiers, not keywords
   UInt<16> acc = state.sum;
 
   for (int k = 0; k < kAcceptedTaps; ++k) {  // run-time limit: constant bound, early break
