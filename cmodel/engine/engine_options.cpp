@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "formatter/formatter_twin.hpp"
+#include "hls/formatter/sample_lattice.hpp"
 
 namespace cig {
 
@@ -86,63 +87,63 @@ std::string EngineOptionSpec::range_in_words() const {
   return range();
 }
 
-EngineOptionSpec choice_option(std::string key, std::vector<std::string> choices, std::string default_value,
-                               std::string help, std::string shorthand) {
+namespace {
+
+// The fields every kind of setting has.
+EngineOptionSpec option_of(EngineOptionSpec::Kind kind, std::string key, std::string default_value, std::string help,
+                           std::string shorthand = "") {
   EngineOptionSpec s;
+  s.kind = kind;
   s.key = std::move(key);
-  s.kind = EngineOptionSpec::Kind::kChoice;
-  s.choices = std::move(choices);
   s.default_value = std::move(default_value);
   s.help = std::move(help);
   s.shorthand = std::move(shorthand);
+  return s;
+}
+
+}  // namespace
+
+EngineOptionSpec choice_option(std::string key, std::vector<std::string> choices, std::string default_value,
+                               std::string help, std::string shorthand) {
+  EngineOptionSpec s = option_of(EngineOptionSpec::Kind::kChoice, std::move(key), std::move(default_value),
+                                 std::move(help), std::move(shorthand));
+  s.choices = std::move(choices);
   return s;
 }
 
 EngineOptionSpec integer_option(std::string key, int min, int max, std::string default_value, std::string help) {
-  EngineOptionSpec s;
-  s.key = std::move(key);
-  s.kind = EngineOptionSpec::Kind::kInteger;
+  EngineOptionSpec s =
+      option_of(EngineOptionSpec::Kind::kInteger, std::move(key), std::move(default_value), std::move(help));
   s.min = min;
   s.max = max;
-  s.default_value = std::move(default_value);
-  s.help = std::move(help);
   return s;
 }
 
 EngineOptionSpec real_option(std::string key, double above, double max, std::string default_value, std::string help) {
-  EngineOptionSpec s;
-  s.key = std::move(key);
-  s.kind = EngineOptionSpec::Kind::kReal;
+  EngineOptionSpec s =
+      option_of(EngineOptionSpec::Kind::kReal, std::move(key), std::move(default_value), std::move(help));
   s.min = above;
   s.max = max;
-  s.default_value = std::move(default_value);
-  s.help = std::move(help);
   return s;
 }
 
 EngineOptionSpec real_option(std::string key, double above, double max, double default_value, std::string help) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", default_value);
-  return real_option(std::move(key), above, max, std::string(text), std::move(help));
+  return real_option(std::move(key), above, max, number_text(default_value), std::move(help));
 }
 
 EngineOptionSpec syntax_option(std::string key, std::string syntax, void (*check)(const std::string&),
                                std::string default_value, std::string help, std::string shorthand) {
-  EngineOptionSpec s;
-  s.key = std::move(key);
-  s.kind = EngineOptionSpec::Kind::kSyntax;
+  EngineOptionSpec s = option_of(EngineOptionSpec::Kind::kSyntax, std::move(key), std::move(default_value),
+                                 std::move(help), std::move(shorthand));
   s.syntax = std::move(syntax);
   s.check = check;
-  s.default_value = std::move(default_value);
-  s.help = std::move(help);
-  s.shorthand = std::move(shorthand);
   return s;
 }
 
 EngineOptionSpec samples_per_pixel_option(int max_side_log2) {
   std::vector<std::string> values;
   for (int t = 0; t <= max_side_log2; ++t) values.push_back(std::to_string(1 << (2 * t)));
-  return choice_option("spp", values, "16", "samples per pixel");
+  return choice_option("spp", values, std::to_string(1 << (2 * hls::kDefaultSideLog2)), "samples per pixel");
 }
 
 EngineOptionSpec subpixel_option(bool float_reference) {

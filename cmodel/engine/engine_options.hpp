@@ -42,7 +42,8 @@ EngineOptionSpec choice_option(std::string key, std::vector<std::string> choices
                                std::string help, std::string shorthand = "");
 EngineOptionSpec integer_option(std::string key, int min, int max, std::string default_value, std::string help);
 EngineOptionSpec real_option(std::string key, double above, double max, std::string default_value, std::string help);
-// The same with the default given as the engine's constant (written as %g), so the two cannot differ.
+// The same with the default given as the engine's constant (written as the range is), so the two
+// cannot differ.
 EngineOptionSpec real_option(std::string key, double above, double max, double default_value, std::string help);
 EngineOptionSpec syntax_option(std::string key, std::string syntax, void (*check)(const std::string&),
                                std::string default_value, std::string help, std::string shorthand = "");

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "hls/formatter/sample_lattice.hpp"
+#include "hls/invparam/visibility.hpp"
 #include "invparam/face_setup.hpp"
 #include "invparam/invparam_double.hpp"
 #include "invparam/systolic_array.hpp"
@@ -310,8 +312,8 @@ class InvparamEngine : public RasterEngine {
 
   bool twin_;
   const char* name_;
-  int bits_ = 64;
-  int side_log2_ = 2;
+  int bits_ = hls::kDefaultWordBits;
+  int side_log2_ = hls::kDefaultSideLog2;
   bool covered_ = false;                       // streaming=covered: objects only to the columns they span
   double clock_ns_ = kInvparamDefaultClockNs;  // t_t
 };
@@ -329,7 +331,8 @@ InvparamHits invparam_kernel_hits(const ScreenFrame& frame, const InvparamLattic
 std::vector<EngineOptionSpec> invparam_engine_options(bool twin) {
   std::vector<EngineOptionSpec> specs;
   if (!twin)
-    specs.push_back(integer_option("bits", kMinWordBits, kMaxWordBits, "64", "the pixel processor's word length"));
+    specs.push_back(integer_option("bits", kMinWordBits, kMaxWordBits, std::to_string(hls::kDefaultWordBits),
+                                   "the pixel processor's word length"));
   specs.push_back(samples_per_pixel_option(3));
   specs.push_back(choice_option("streaming", {"full", "covered"}, "full",
                                 "the array's object stream: to every column (the seed's) or to the columns an object "

@@ -7,17 +7,10 @@ usage: check_cli_habits.py CIG CASE WORKDIR   (CASE: version, bare, report)"""
 import json
 import os
 import re
-import subprocess
 import sys
 
-
-def run(cmd, **kw):
-    return subprocess.run(cmd, capture_output=True, text=True, **kw)
-
-
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from cli_check import fail, run  # noqa: E402
 
 
 def case_version(cig, work):

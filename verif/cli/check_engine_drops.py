@@ -15,8 +15,10 @@ import json
 import os
 import re
 import shutil
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from cli_check import fail, run  # noqa: E402
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MIXED = os.path.join(SOURCE, "scenes", "small", "mixed.json")
@@ -24,15 +26,6 @@ IMAGES = [(f, c) for f in (0, 1) for c in (0, 1)]  # --frames 0:1 x the scene's 
 WARNING = re.compile(r"^cig: warning: (.*): the (\S+) engine cannot draw all of its input: "
                      r"(\d+) polygon\(s\) not drawn: not a face of a convex polyhedron .*?"
                      r"(?:; (\d+) light point\(s\) not drawn .*)?$")
-
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True)
-
-
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
 
 
 def ok(cmd, r):

@@ -14,7 +14,7 @@ import subprocess
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from folder_snapshot import snapshot  # noqa: E402
+from cli_check import fail, snapshot  # noqa: E402
 
 # name: (command line, run in WORK; the text stderr must contain). SRC stands for the source tree,
 # '' for an empty argument.
@@ -83,11 +83,6 @@ COSIM_CASES = {
                                       "--trace models/crate.obj",
                                       "--trace: 'models/crate.obj' is an OBJ model the scene references"),
 }
-
-
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
 
 
 def prepare(source, work):

@@ -15,12 +15,7 @@ import subprocess
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from folder_snapshot import snapshot  # noqa: E402
-
-
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
+from cli_check import fail, snapshot  # noqa: E402
 
 
 def main():

@@ -169,7 +169,7 @@ Comparison compare_traces(const RtlLayout& L, const Trace& model, const Trace& r
 
 CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<hls::QuadWindow<RtlArith>>& roots,
                          RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls, long long max_cycles,
-                         const CycleProgress& progress) {
+                         const CycleProgress& progress, const BeforeRtl& before_rtl) {
   CosimResult r;
   const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
   quad::PixelFrame<RtlArith> pixels;
@@ -180,6 +180,7 @@ CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<
                      "the light points touch " + std::to_string(pixels.covers().size()) +
                          " pixels; the RTL's light-cover table (LIGHT_COVERS) holds " + std::to_string(light_covers));
   r.model = model_trace(arch, roots, pixels, stalls, 2, &r.stats);
+  if (before_rtl) before_rtl(r.model.cycles);
   pixels.begin(frame_for_tables, cfg.raster_log2);  // the RTL starts from the same tables, cleared states
   if (progress) rtl.on_cycles([&](long long c) { progress(c, r.model.cycles); });
   try {
@@ -205,31 +206,11 @@ void check_raster(const ScreenFrame& frame, const RtlConfig& cfg) {
 }  // namespace
 
 CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
-                        long long max_cycles, const CycleProgress& progress) {
+                        long long max_cycles, const CycleProgress& progress, const BeforeRtl& before_rtl) {
   check_raster(frame, cfg);
   quad::FrontEndStats fe;
   const std::vector<hls::QuadWindow<RtlArith>> roots = quad::front_end<RtlArith>(frame, cfg.raster_log2, fe);
-  return cosim_stream(frame, roots, rtl, cfg, stalls, max_cycles, progress);
-}
-
-long long model_cycles(const ScreenFrame& frame, const RtlConfig& cfg, const StallConfig& stalls) {
-  check_raster(frame, cfg);
-  quad::FrontEndStats fe;
-  const std::vector<hls::QuadWindow<RtlArith>> roots = quad::front_end<RtlArith>(frame, cfg.raster_log2, fe);
-  const quad::Architecture arch = quad::Architecture::parse(cfg.arch_text(), cfg.raster_log2);
-  quad::ArchConfig ac;
-  ac.fifo_depth = 2;
-  ac.masks = true;
-  ac.stall_seed = stalls.seed;
-  ac.input_gap_percent = stalls.input_gap_percent;
-  ac.output_stall_percent = stalls.output_stall_percent;
-  ac.start_window = stalls.start_window;
-  quad::ArchModel<RtlArith> model(arch, ac);
-  quad::PixelFrame<RtlArith> pixels;
-  pixels.begin(frame, cfg.raster_log2);
-  auto masks = std::make_unique<hls::MaskMemory>();
-  hls::mask_clear(*masks, arch.raster_log2);
-  return model.run(roots, *masks, pixels).cycles;
+  return cosim_stream(frame, roots, rtl, cfg, stalls, max_cycles, progress, before_rtl);
 }
 
 std::unique_ptr<RasterEngine> quadtree_engine(const RtlConfig& cfg, const StallConfig& stalls, bool fan_split) {

@@ -174,22 +174,23 @@ std::unique_ptr<RtlRunner> make_rtl_runner(int raster_log2, int tree_levels);
 std::unique_ptr<RtlRunner> make_fast_rtl_runner(int raster_log2, int tree_levels);
 
 // One frame through both sides: the model first, then the RTL (its progress: the cycles done and
-// the model's count).
+// the model's count; before_rtl: called with the model's count before the RTL starts, where a
+// trace is planned against the frame's cycles).
 struct CosimResult {
   Trace model, rtl;
   Comparison comparison;
   quad::ArchStats stats;
 };
 using CycleProgress = std::function<void(long long done, long long total)>;
+using BeforeRtl = std::function<void(long long model_cycles)>;
 CosimResult cosim_frame(const ScreenFrame& frame, RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
-                        long long max_cycles = 200000000, const CycleProgress& progress = {});
+                        long long max_cycles = 200000000, const CycleProgress& progress = {},
+                        const BeforeRtl& before_rtl = {});
 // The same on a stream of windows already set up (tests build their own streams).
 CosimResult cosim_stream(const ScreenFrame& frame_for_tables, const std::vector<hls::QuadWindow<RtlArith>>& roots,
                          RtlRunner& rtl, const RtlConfig& cfg, const StallConfig& stalls,
-                         long long max_cycles = 200000000, const CycleProgress& progress = {});
-// The model alone on the frame (no records kept): the frame's cycles, what the co-simulation will
-// count (a trace window is checked against them before the RTL runs).
-long long model_cycles(const ScreenFrame& frame, const RtlConfig& cfg, const StallConfig& stalls);
+                         long long max_cycles = 200000000, const CycleProgress& progress = {},
+                         const BeforeRtl& before_rtl = {});
 
 // The quadtree engine of `cig render|raster --engine quadtree --arch A` with the co-simulation's
 // settings (the RTL's format, 16 samples, masks on, FIFO depth 2, the start window, the fan split

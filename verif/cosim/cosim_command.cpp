@@ -6,10 +6,8 @@
 //                       [--trace FILE.fst [--trace-cycles A:B] [--trace-depth N]] [--stall-seed S]
 //                       [--input-gaps P] [--vt-stalls P] [--report FILE]
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -101,27 +99,18 @@ std::string image_name(const FrameJobs& jobs, std::size_t k) {
 // An input error of image k, named (errors of an option pass as they are).
 [[noreturn]] void rethrow_for_image(const InputError& e, const std::string& input, const FrameJobs& jobs,
                                     std::size_t k) {
-  if (!e.file().empty() || e.where() == "--arch") throw e;
+  if (!e.file().empty() || e.where().rfind("--", 0) == 0) throw e;
   throw InputError(input, image_name(jobs, k) + ", " + e.where(), e.rule());
 }
 
-// With --trace: image 0's stream and the model's count of its cycles, the window checked against
-// them and the trace begun (the RTL's next run); nothing without --trace.
-std::optional<cosim::EngineStream> start_trace(CosimTrace& trace, const std::string& input, const FrameJobs& jobs,
-                                               const RasterEngine& engine, const cosim::RtlConfig& cfg,
-                                               const cosim::StallConfig& stalls, cosim::RtlRunner& rtl) {
-  if (!trace.on()) return std::nullopt;
-  std::optional<cosim::EngineStream> first;
-  try {
-    first = cosim::engine_stream(engine, jobs.screen_frame(0));
-  } catch (const InputError& e) { rethrow_for_image(e, input, jobs, 0); }
-  const long long cycles = cosim::model_cycles(first->frame, cfg, stalls);
-  const cosim::TraceSettings settings =
-      trace.plan(0, cycles, std::llround(1e6 / kQuadDefaultClockMhz), trace_cost(cfg.arch_text()), image_name(jobs, 0));
-  const auto parent = std::filesystem::path(trace.file()).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  rtl.trace_to(settings);
-  return first;
+// With --trace, for image 0: once its model has counted the image's cycles, the window checked
+// against them and the trace begun (the RTL's run that follows); nothing without --trace.
+cosim::BeforeRtl trace_start(CosimTrace& trace, const std::string& image, const cosim::RtlConfig& cfg,
+                             cosim::RtlRunner& rtl) {
+  if (!trace.on()) return {};
+  return [&trace, image, &cfg, &rtl](long long cycles) {
+    rtl.trace_to(trace.plan(0, cycles, std::llround(1e6 / kQuadDefaultClockMhz), trace_cost(cfg.arch_text()), image));
+  };
 }
 
 // Image k's line of the table (stdout) and its entry in the report.
@@ -153,6 +142,14 @@ nlohmann::ordered_json image_row(const FrameJobs& jobs, std::size_t k, const cos
 
 }  // namespace
 
+void CosimCommand::check_outputs(const FrameJobs& jobs, const CosimTrace& trace) const {
+  OutputPlan plan;
+  jobs.declare_inputs(plan);
+  if (!report_file.empty()) plan.file(report_file, "--report");
+  trace.declare_outputs(plan);
+  plan.check();
+}
+
 int CosimCommand::run_quadtree() {
   CosimTrace trace(trace_file, trace_cycles, trace_depth, trace_cycles_opt->count() > 0, trace_depth_opt->count() > 0);
   const FrameJobs jobs =
@@ -162,18 +159,8 @@ int CosimCommand::run_quadtree() {
   const cosim::StallConfig stalls{stall_seed, input_gaps, output_stalls, start_window == "bbox"};
   const std::unique_ptr<RasterEngine> engine = cosim::quadtree_engine(cfg, stalls, fan_split == "on");
   jobs.check_capacity(*engine);
-  OutputPlan plan;
-  jobs.declare_inputs(plan);
-  if (!report_file.empty()) plan.file(report_file, "--report");
-  if (!trace_file.empty()) {
-    plan.file(trace_file, "--trace");
-    plan.file(trace.save_file(), "--trace");
-  }
-  plan.check();
-  trace.check_outputs();
+  check_outputs(jobs, trace);
   auto rtl = cosim::make_rtl_runner(cfg.raster_log2, cfg.tree_levels);
-  // Image 0's stream, when the trace needs its cycles first.
-  std::optional<cosim::EngineStream> first = start_trace(trace, input, jobs, *engine, cfg, stalls, *rtl);
   std::cout << "cig cosim: " << input << ", architecture " << a.text << " (" << a.pe_count()
             << " PEs), stalls: input gaps " << input_gaps << " %, output stalls " << output_stalls << " % (seed "
             << stall_seed << "), start window " << start_window << ", fan split " << fan_split
@@ -194,9 +181,11 @@ int CosimCommand::run_quadtree() {
     cosim::EngineStream stream;
     cosim::CosimResult r;
     try {
-      stream = first && k == 0 ? std::move(*first) : cosim::engine_stream(*engine, jobs.screen_frame(k));
-      r = cosim::cosim_frame(stream.frame, *rtl, cfg, stalls, 200000000,
-                             [&](long long done, long long total) { progress.within(done, total, "RTL cycles"); });
+      stream = cosim::engine_stream(*engine, jobs.screen_frame(k));
+      r = cosim::cosim_frame(
+          stream.frame, *rtl, cfg, stalls, 200000000,
+          [&](long long done, long long total) { progress.within(done, total, "RTL cycles"); },
+          k == 0 ? trace_start(trace, image_name(jobs, k), cfg, *rtl) : cosim::BeforeRtl{});
     } catch (const InputError& e) {
       // An input error leaves no output behind: the trace started for this run goes.
       rtl.reset();

@@ -16,6 +16,9 @@
 
 namespace cig::cli {
 
+class CosimTrace;
+class FrameJobs;
+
 struct CosimCommand {
   std::string input, arch, frames_text, trace_file, report_file;
   std::string processor = "quadtree";  // --processor quadtree|invparam
@@ -38,6 +41,8 @@ struct CosimCommand {
  private:
   int run_quadtree();
   int run_invparam();  // cosim_invparam.cpp
+  // Before any work: the run's inputs and its outputs (the report, the trace) collide nowhere.
+  void check_outputs(const FrameJobs& jobs, const CosimTrace& trace) const;
 };
 
 }  // namespace cig::cli

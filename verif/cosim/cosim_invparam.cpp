@@ -3,7 +3,6 @@
 // without reset (ip_cosim.hpp); per frame the faces, samples, tokens, codes, the cycles of both,
 // the held cycles and the mismatches.
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -11,7 +10,6 @@
 
 #include "cli/cli_common.hpp"
 #include "cli/frame_jobs.hpp"
-#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
 #include "cosim_command.hpp"
@@ -89,25 +87,13 @@ int CosimCommand::run_invparam() {
   const FrameJobs jobs =
       FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
   const std::vector<ScreenFrame> frames = invparam_frames(jobs, input);
-  OutputPlan plan;
-  jobs.declare_inputs(plan);
-  if (!report_file.empty()) plan.file(report_file, "--report");
-  if (!trace_file.empty()) {
-    plan.file(trace_file, "--trace");
-    plan.file(trace.save_file(), "--trace");
-  }
-  plan.check();
-  trace.check_outputs();
+  check_outputs(jobs, trace);
   auto rtl = cosim::make_ip_rtl(cfg.w, cfg.n_pp);
   const auto cosim = cosim::make_ip_frame_cosim(*rtl);
   const invparam::ArrayPacing pacing{stall_seed, input_gaps, vt_stalls};
   if (trace.on()) {  // the first frame's cycles 1..C (the model counts them first)
-    const cosim::TraceSettings settings =
-        trace.plan(1, cosim->model_cycles(frames[0], pacing), std::llround(kInvparamDefaultClockNs * 1000),
-                   trace_cost(cfg.text()), image_name(jobs, 0));
-    const auto parent = std::filesystem::path(trace_file).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-    rtl->trace_to(settings);
+    rtl->trace_to(trace.plan(1, cosim->model_cycles(frames[0], pacing), std::llround(kInvparamDefaultClockNs * 1000),
+                             trace_cost(cfg.text()), image_name(jobs, 0)));
   }
   std::cout << "cig cosim: " << input << ", processor invparam, ip_array " << cfg.text() << " (a " << cfg.n_pp << " x "
             << cfg.n_pp << " lattice), stalls: input gaps " << input_gaps << " %, VT stalls " << vt_stalls
@@ -125,9 +111,8 @@ int CosimCommand::run_invparam() {
   std::string first;
   Progress progress("cig cosim", (long long)frames.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    // The frame's cycles for the progress's total: the model alone first (a small share of the run).
-    const std::int64_t total = cosim->model_cycles(frames[k], pacing);
-    rtl->on_cycles([&](long long t) { progress.within(t, total, "cycles"); });
+    // Progress by frame: the model runs in lock step with the RTL, so a frame's cycles are known
+    // only at its end, and a frame of the built configurations takes about a second.
     const cosim::IpFrameResult r = cosim->run(frames[k], pacing);
     rep["runs"].push_back(frame_row(jobs, k, r));
     checks += r.checks;
@@ -137,7 +122,6 @@ int CosimCommand::run_invparam() {
     if (k == 0 && trace.on()) rep["trace"] = trace.finish(cosim::TracedDesign::kInvparamArray, r.seconds);
     progress.step(image_name(jobs, k) + ": " + std::to_string(r.rtl_cycles) + " cycles");
   }
-  rtl->on_cycles({});
   std::cout << "all: " << checks << " values compared, " << mismatches << " mismatches, " << bad_cycles
             << " frame(s) with a cycle mismatch\n";
   if (!first.empty()) std::cout << "first mismatch: " << first << "\n";

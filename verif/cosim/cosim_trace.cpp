@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cli/cli_common.hpp"
+#include "cli/output_plan.hpp"
 #include "common/error.hpp"
 
 namespace cig::cli {
@@ -74,10 +75,10 @@ CosimTrace::CosimTrace(std::string file, const std::string& cycles_text, int dep
     throw InputError("", "--trace-cycles", "'" + cycles_text + "': B < A (the window is cycles A to B, inclusive)");
 }
 
-void CosimTrace::check_outputs() const {
+void CosimTrace::declare_outputs(OutputPlan& plan) const {
   if (!on()) return;
-  check_output_file(file_, "--trace");
-  check_output_file(save_file(), "--trace");
+  plan.file(file_, "--trace");
+  plan.file(save_file(), "--trace");
 }
 
 cosim::TraceSettings CosimTrace::plan(long long first_cycle, long long last_cycle, std::int64_t period_ps,
@@ -102,6 +103,8 @@ cosim::TraceSettings CosimTrace::plan(long long first_cycle, long long last_cycl
               << " and take about " << seconds_text(seconds) << " more; --trace-cycles A:B traces a window ("
               << kSuggestedWindow << " cycles: about " << megabytes(double(kSuggestedWindow) * cost.bytes_per_cycle)
               << ", " << seconds_text(double(kSuggestedWindow) * cost.seconds_per_cycle) << ")\n";
+  const auto parent = std::filesystem::path(file_).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
   return settings_;
 }
 

@@ -25,6 +25,8 @@ struct TraceCost {
 // The configurations' costs: the quadtree's by architecture ("7p2t"), stage F's by "W=64, N_PP=64".
 TraceCost trace_cost(const std::string& configuration);
 
+class OutputPlan;
+
 class CosimTrace {
  public:
   // The options as given; the window's syntax and the option pairing checked (InputError).
@@ -32,10 +34,11 @@ class CosimTrace {
   bool on() const { return !file_.empty(); }
   const std::string& file() const { return file_; }
   std::string save_file() const { return file_ + ".gtkw"; }
-  // Before any work: the trace and its save file can be written.
-  void check_outputs() const;
+  // Before any work: the trace and its save file among the run's outputs (checked with the rest).
+  void declare_outputs(OutputPlan& plan) const;
   // The traced image's cycles known (first_cycle..last_cycle): the window checked against them
-  // (InputError), the warning for a large trace, the settings to trace with.
+  // (InputError), the warning for a large trace, the trace's folder made, the settings to trace
+  // with.
   cosim::TraceSettings plan(long long first_cycle, long long last_cycle, std::int64_t period_ps, const TraceCost& cost,
                             const std::string& image);
   // After the traced image: the save file written, the summary line (stdout), the report's entry.

@@ -15,7 +15,6 @@
 
 #include <chrono>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -62,11 +61,6 @@ class IpRtl {
   // FST of the next frame (trace_settings.hpp: its cycles 1..C, or the window first..last).
   virtual void trace_to(const TraceSettings& trace) = 0;
   void trace_to(const std::string& fst_file) { trace_to(TraceSettings{fst_file}); }
-  // Called every kProgressCycles cycles with the cycle reached ({}: none).
-  void on_cycles(std::function<void(long long)> f) { on_cycles_ = std::move(f); }
-
- protected:
-  std::function<void(long long)> on_cycles_;
 };
 // nullptr when this build has no such configuration.
 std::unique_ptr<IpRtl> make_ip_rtl(int w, int n_pp);

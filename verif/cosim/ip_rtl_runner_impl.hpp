@@ -55,7 +55,6 @@ class IpRtlImpl final : public IpRtl, private VerilatedModel<Top, kTrace> {
   }
 
   void cycle(std::int64_t t, bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) override {
-    if (on_cycles_ && t % kProgressCycles == 0) on_cycles_(t);
     begin_cycle(t);
     top_->in_valid_i = in_valid;
     top_->in_start_i = in_start;

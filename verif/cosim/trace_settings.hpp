@@ -34,7 +34,7 @@ struct TraceTimeScale {
   }
 };
 
-// Cycles between two calls of a run's progress callback (RtlRunner, IpRtl::on_cycles).
+// Cycles between two calls of a run's progress callback (RtlRunner::on_cycles).
 constexpr long long kProgressCycles = 4096;
 
 }  // namespace cig::cosim

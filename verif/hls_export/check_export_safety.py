@@ -18,24 +18,14 @@ user's file in place with its content:
 usage: check_export_safety.py EXPORT REPO WORK CASE [KEEP]   (WORK: a scratch folder outside REPO)"""
 import os
 import shutil
-import subprocess
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
-from folder_snapshot import snapshot  # noqa: E402
+from cli_check import fail, run, snapshot  # noqa: E402
 
 TOP = "overload_threshold_top"  # the smallest bundle
 BUNDLE_NAMES = [".cig-hls-bundle", "README.md", "run_vitis.tcl", "run_catapult.tcl", "hls", "src", "tb", "vectors"]
-
-
-def fail(msg):
-    print("FAIL: " + msg)
-    sys.exit(1)
-
-
-def run(args, env=None):
-    return subprocess.run(args, capture_output=True, text=True, env=env)
 
 
 def write(path, text):
@@ -116,8 +106,8 @@ def case_home(export, repo, work):
     notes = os.path.join(home, "notes.txt")
     write(notes, "home notes\n")
     env = dict(os.environ, HOME=home)
-    expect_refused(run([export, TOP, home], env), home + ": is your home folder")
-    expect_refused(run([export, TOP, work], env), f"{work}: is a parent of your home folder {home}")
+    expect_refused(run([export, TOP, home], env=env), home + ": is your home folder")
+    expect_refused(run([export, TOP, work], env=env), f"{work}: is a parent of your home folder {home}")
     expect_untouched(home, ["notes.txt"], {notes: b"home notes\n"})
     expect_untouched(work, ["home"], {})
 

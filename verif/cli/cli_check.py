@@ -1,8 +1,20 @@
-"""What a folder holds, to show that a refused run changed nothing (issue 28's "nothing written"
-tests: verif/cli/check_output_collisions.py, check_tool_folders.py,
-verif/hls_export/check_export_safety.py)."""
+"""What the command-line checks share (verif/cli/check_*.py, verif/hls_export/check_export_safety.py):
+a failure line and exit status 1, a command run with its output captured, and what a folder holds
+(to show that a refused run changed nothing)."""
 import hashlib
 import os
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("FAIL: " + msg)
+    sys.exit(1)
+
+
+def run(cmd, **kw):
+    """cmd run to its end, stdout and stderr captured as text."""
+    return subprocess.run(cmd, capture_output=True, text=True, **kw)
 
 
 def snapshot(root):
