@@ -21,9 +21,10 @@ module ip_array #(
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,
-  // Configuration: RGeps of every PP.
-  input  logic            cfg_eps_valid_i,
+  // Configuration: RGeps and RGnear of every PP, one write.
+  input  logic            cfg_valid_i,
   input  logic [W-1:0]    cfg_eps_i,
+  input  logic [W-1:0]    cfg_near_i,
   // The host's Input and Ctrl to PP 0.
   input  logic            in_valid_i,
   input  logic            in_start_i,
@@ -61,8 +62,9 @@ module ip_array #(
       .clk_i,
       .rst_ni,
       .en_i        (advance),
-      .eps_we_i    (cfg_eps_valid_i),
+      .cfg_we_i    (cfg_valid_i),
       .eps_i       (cfg_eps_i),
+      .near_i      (cfg_near_i),
       .in_word_i   (chain_word[k*W +: W]),
       .in_start_i  (chain_start[k]),
       .in_valid_i  (chain_valid[k]),

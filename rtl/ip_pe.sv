@@ -3,15 +3,18 @@
 //
 // Arithmetic and timing = hls/invparam/pixel_processor.hpp pp_clock, one call per enabled clock,
 // bit for bit (that header's comment lists the seed's clock-by-clock register transfers and the
-// choices where the seed is silent). W-bit words are two's complement, 8 integer bits (hls
-// Word<W>); every comparison is signed.
+// choices where the seed is silent). W is the register width: W-bit words are two's complement,
+// the seed's word of W - 16 bits (8 integer) below 16 guard bits (hls Word<W - 16> =
+// WideInt<W>, hls/invparam/word.hpp); every comparison is signed.
 //
 // Datapath as the seed draws it: one adder SM (Input + RGh in a T_Pln's clock 3, else Input
 // passes; flags z, s of its sum), one comparator Cm (c = A > B, its operands chosen per clock),
-// the registers RGres, RGh, RGtin, RGtout, RGobj, RGeps (W bits), RGpar, RGparP (24 bits), RGI
-// (5 bits), the flip-flops Tz, Ts, Tc; the control unit's clock counter and the Ctrl flip-flops
-// (start and valid, delayed with RGres). The seed's nine tri-state buffers are the multiplexers
-// in front of Cm and of the registers.
+// the registers RGres, RGh, RGtin, RGtout, RGobj, RGeps, RGnear (W bits), RGpar, RGparP (24
+// bits), RGI (5 bits), the flip-flops Tz, Ts, Tc; the control unit's clock counter and the Ctrl
+// flip-flops (start and valid, delayed with RGres). The seed's nine tri-state buffers are the
+// multiplexers in front of Cm and of the registers. RGnear (ours, issue 29) is 1/near, the near
+// plane: Obj clock 3 compares RGtin with it where the seed has its constant MAX on bus A; its reset
+// value MAX is the seed's PP.
 //
 // Ctrl: start marks word 1 of a token (it restarts the counter), valid marks a word at all. An
 // invalid word (a bubble) changes no register but the delayed Ctrl lines. en_i is the array's
@@ -25,9 +28,10 @@ module ip_pe #(
   input  logic          clk_i,
   input  logic          rst_ni,
   input  logic          en_i,          // the array advances this clock
-  // Configuration: RGeps, the tolerance of the Den test (negative).
-  input  logic          eps_we_i,
+  // Configuration, one write: RGeps, the tolerance of the Den test (negative), and RGnear.
+  input  logic          cfg_we_i,
   input  logic [W-1:0]  eps_i,
+  input  logic [W-1:0]  near_i,
   // Input and Ctrl from the PP above (or the host).
   input  logic [W-1:0]  in_word_i,
   input  logic          in_start_i,
@@ -47,7 +51,7 @@ module ip_pe #(
   localparam logic [W-1:0] WORD_MAX = {1'b0, {(W - 1){1'b1}}};  // the largest code (tau = MAX)
 
   logic [W-1:0]  rg_res_q, rg_res_d, rg_h_q, rg_h_d, rg_tin_q, rg_tin_d;
-  logic [W-1:0]  rg_tout_q, rg_tout_d, rg_obj_q, rg_obj_d, rg_eps_q;
+  logic [W-1:0]  rg_tout_q, rg_tout_d, rg_obj_q, rg_obj_d, rg_eps_q, rg_near_q;
   logic [PW-1:0] rg_par_q, rg_par_d, rg_parp_q, rg_parp_d;
   logic [CW-1:0] rg_i_q, rg_i_d;
   logic          tz_q, tz_d, ts_q, ts_d, tc_q, tc_d, tctrl_q, tvalid_q;
@@ -98,7 +102,7 @@ module ip_pe #(
 
   // ---- Cm: c = A > B (signed), operands by the clock (pp_pln_decide, pp_obj_clock) ---------------
   // Pln clock 4: RGres against RGeps (Az = 0), RGtout (an exit plane) or RGtin (an entry plane);
-  // Obj clock 2: RGtin > RGtout; clock 3: MAX > RGtin; clock 4: RGtin > RGobj.
+  // Obj clock 2: RGtin > RGtout; clock 3: RGnear > RGtin; clock 4: RGtin > RGobj.
   logic [W-1:0] cm_a, cm_b;
   logic         cm_enable, c;
   ip_cm #(
@@ -122,7 +126,7 @@ module ip_pe #(
       cm_b = rg_tout_q;
       cm_enable = 1'b1;
     end else if (obj3) begin
-      cm_a = WORD_MAX;
+      cm_a = rg_near_q;
       cm_b = rg_tin_q;
       cm_enable = tc_q;
     end else if (obj4) begin
@@ -215,12 +219,15 @@ module ip_pe #(
     end
   end
 
-  // RGeps: a configuration register (the seed does not say how it is loaded).
+  // RGeps and RGnear: configuration registers, written together whatever en_i (the seed does not
+  // say how RGeps is loaded). After the reset RGnear is MAX: no near plane, the seed's PP.
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       rg_eps_q <= '0;
-    end else if (eps_we_i) begin
+      rg_near_q <= WORD_MAX;
+    end else if (cfg_we_i) begin
       rg_eps_q <= eps_i;
+      rg_near_q <= near_i;
     end
   end
 

@@ -2,10 +2,10 @@
 // rtl/README.md "Stage F"): the one SystemVerilog place they live, named as ip_pkg::NAME by
 // ip_pe and ip_array. The C++ side is hls/invparam/tokens.hpp (the same codes), the contract.
 //
-// A token's word 1 carries its 5-bit command in the word's top bits: kind in bits 4:3 (00 Empty,
-// 01 Col, 10 Obj, 11 Pln), bit 1 Az (Pln), bit 0 As (Pln) or First (Col: the frame's initialising
-// T_Col, which puts nothing on VT). Colour / id codes (T_Pln word 4, T_Col word 2) are a word's
-// low 24 bits.
+// A token's word 1 carries its 5-bit command in the register's top bits (W-1 .. W-5): kind in
+// bits 4:3 (00 Empty, 01 Col, 10 Obj, 11 Pln), bit 1 Az (Pln), bit 0 As (Pln) or First (Col: the
+// frame's initialising T_Col, which puts nothing on VT). Colour / id codes (T_Pln word 4, T_Col
+// word 2) are a word's low 24 bits.
 package ip_pkg;
 
   // A package's constants serve every module, and a lint run whose top is one module uses only
@@ -13,12 +13,14 @@ package ip_pkg;
   /* verilator lint_off UNUSEDPARAM */
 
   // ---- Parameter defaults ---------------------------------------------------------------------
-  localparam int W_DEFAULT = 64;       // the seed's word: 8 integer bits, 56 fractional (hls Word<64>)
+  // W is the register width: the seed's 64-bit word plus 16 guard bits (hls Word<64> =
+  // WideInt<80>: 24 integer bits, 56 fractional; hls/invparam/word.hpp kGuardBits).
+  localparam int W_DEFAULT = 80;
   localparam int N_PP_DEFAULT = 16;    // PPs in the chain (the seed: one per sample of a column)
 
   // ---- Limits, checked at elaboration ($error) ------------------------------------------------
   localparam int W_MIN = 26;           // the 24-bit code field below the sign bit, and a sign bit
-  localparam int W_MAX = 128;          // hls WideInt's widest word
+  localparam int W_MAX = 128;          // hls WideInt's widest register (a seed word of up to 112 bits)
   localparam int N_PP_MAX = 4096;      // hls kMaxSamplesPerColumn
 
   // ---- Token coding (hls/invparam/tokens.hpp) --------------------------------------------------

@@ -9,3 +9,7 @@ set(CIG_IP_RTL_SV_NAMES
   ip_array.sv
 )
 list(TRANSFORM CIG_IP_RTL_SV_NAMES PREPEND ${CMAKE_CURRENT_LIST_DIR}/ OUTPUT_VARIABLE CIG_IP_RTL_SV)
+# The RTL's parameter W is the register width: the seed's word of w bits plus CIG_IP_GUARD_BITS
+# (hls/invparam/word.hpp kGuardBits; hls Word<w> = WideInt<w + 16>). The configurations are named
+# by the seed's w (Vip_array_w64_n8 has W = 80); the harnesses check W against hls word_bits(w).
+set(CIG_IP_GUARD_BITS 16)

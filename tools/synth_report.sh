@@ -8,9 +8,10 @@
 #              4 pixel processors), the coarse format's widths (G = 6, PW = 35, GW = 20), 2 light
 #              covers, a 16-entry fog table (FOG_CODE_BITS = 4), so that its memories stay small
 #              and the run takes minutes on 2 cores;
-#   ip_pe_57   stage F's pixel processor (ip_pe) at W = 57 bits (the seed's word for 10 km);
-#   ip_pe_64   the same at W = 64 (the seed's word for 100 km, its "six 64-bit registers");
-#   ip_array_16  ip_array of N_PP = 16 PPs at W = 64 (the chain, the VT bus, the handshake).
+#   ip_pe_57   stage F's pixel processor (ip_pe) for the seed's 57-bit word (10 km): registers of
+#              W = 73 bits (the word and 16 guard bits, hls Word<57>);
+#   ip_pe_64   the same for the seed's 64-bit word (100 km, its "six 64-bit registers"): W = 80;
+#   ip_array_16  ip_array of N_PP = 16 PPs at W = 80 (the chain, the VT bus, the handshake).
 # Flow: read_verilog -sv; hierarchy -top; proc; opt; wreduce; peepopt; alumacc; opt;
 # memory -nomap (the coarse-grain part of `synth`, which narrows adders and multipliers before they
 # are mapped, without its SAT-based `share`, which runs for many minutes on the pixel processor);
@@ -62,7 +63,7 @@ design_args() {
     raster)   echo "qt_raster -chparam N_LOG2 4 -chparam TREE_LEVELS 2 -chparam G 6 -chparam PW 35 -chparam GW 20 -chparam LIGHT_COVERS 2 -chparam FOG_CODE_BITS 4" ;;
     ip_pe_57) echo "ip_pe" ;;   # W by design_pre: hierarchy -chparam on a top with submodules
     ip_pe_64) echo "ip_pe" ;;   # trips an assertion of yosys 0.23 (rtl/README.md)
-    ip_array_16) echo "ip_array -chparam W 64 -chparam N_PP 16" ;;
+    ip_array_16) echo "ip_array -chparam W 80 -chparam N_PP 16" ;;
     *) echo "synth_report: unknown design '$1' (pe_mid, pe_pixel, raster, ip_pe_57, ip_pe_64, ip_array_16)" >&2; exit 2 ;;
   esac
 }
@@ -70,8 +71,8 @@ design_args() {
 # Commands before `hierarchy` (parameters set on the module itself).
 design_pre() {
   case "$1" in
-    ip_pe_57) echo "chparam -set W 57 ip_pe" ;;
-    ip_pe_64) echo "chparam -set W 64 ip_pe" ;;
+    ip_pe_57) echo "chparam -set W 73 ip_pe" ;;   # the register width: seed W + 16 guard bits
+    ip_pe_64) echo "chparam -set W 80 ip_pe" ;;
     *) echo "" ;;
   esac
 }

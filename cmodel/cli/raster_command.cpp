@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/output_plan.hpp"
+#include "common/error.hpp"
 #include "image/image.hpp"
 
 namespace cig::cli {
@@ -22,8 +23,12 @@ int RasterCommand::run() {
   const EngineOptions eo = engine.options();
   const ScreenFrame frame = load_polygon_list(polys_file);
   auto eng = make_engine(engine.engine, eo);
-  eng->check_raster(frame.raster);
-  eng->check_frame(frame);
+  try {
+    eng->check_raster(frame.raster);
+    eng->check_frame(frame);
+  } catch (const InputError& e) {  // the engine's capability checks name no file: this one
+    throw InputError(e.file().empty() ? polys_file : e.file(), e.where(), e.rule());
+  }
   OutputPlan plan;
   plan.input(polys_file, "the polygon list this run reads");
   plan.file(out_file, "--out");

@@ -74,6 +74,7 @@ struct ScreenFrame {
   // Stage F only: the projection's tan(fov/2) and the convex polyhedra of the scene that passed the
   // culling (empty for a polygon list and for objects that are not convex polyhedra).
   double tan_half_fov = 1;
+  double near = 0;  // the near plane's eye depth (view.near; 0: none): nearer points are not drawn
   std::vector<EyePolyhedron> polyhedra;
   // Whether stage B listed the scene's convex polyhedra here: true for every frame of a scene that
   // has some, even one whose channel sees none of them; false for a polygon list.

@@ -184,6 +184,7 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
       g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
   }
   f.tan_half_fov = view.tan_half_fov;
+  f.near = view.near;
   f.lists_polyhedra = db.has_polyhedra;
   if (db.has_polyhedra) eye_polyhedra(scene, db, view, list, f);
   stats.polygons_out += f.polygons.size();

@@ -36,15 +36,21 @@ struct Candidate {
   std::uint32_t code;
 };
 
-// The entry faces of one polyhedron whose entry point is inside (or borderline) every other plane.
-void polyhedron_candidates(const EyePolyhedron& p, int index, std::uint32_t code0, const Ray& ray,
+// The entry faces of one polyhedron whose entry point is inside (or borderline) every other plane
+// and beyond the near plane (tau < tau_near; 0: none).
+void polyhedron_candidates(const EyePolyhedron& p, int index, std::uint32_t code0, const Ray& ray, Quad tau_near,
                            const ExactMargins& m, std::vector<Candidate>& out) {
   for (std::size_t f = 0; f < p.faces.size(); ++f) {
     const EyeFace& face = p.faces[f];
     const Quad dn = dot(face, ray);
     if (!(face.d < 0 && dn < 0)) continue;  // not a face the ray enters at some t > 0
     const Quad t = Quad(face.d) / dn, tau = dn / Quad(face.d);
-    bool border = tau <= Quad(m.tau) + kFloatMargin * abs_dot(face, ray) / quad_abs(Quad(face.d));
+    const Quad fp = kFloatMargin * abs_dot(face, ray) / quad_abs(Quad(face.d));
+    bool border = tau <= Quad(m.tau) + fp;
+    if (tau_near > 0) {  // what the near plane cuts away is not drawn
+      if (tau > tau_near + 2 * Quad(m.tau) + fp) continue;
+      border = border || tau >= tau_near - 2 * Quad(m.tau) - fp;
+    }
     bool valid = true;
     for (std::size_t g = 0; g < p.faces.size() && valid; ++g) {
       if (g == f) continue;
@@ -64,8 +70,9 @@ ExactSample exact_visibility_sample(const ScreenFrame& frame, int size, int i, i
   const Ray ray{{t_half * xs, t_half * ys, Quad(1)}};
   std::vector<Candidate> cands;
   std::uint32_t code0 = 0;
+  const Quad tau_near = frame.near > 0 ? 1 / Quad(frame.near) : Quad(0);
   for (std::size_t p = 0; p < frame.polyhedra.size(); ++p) {
-    polyhedron_candidates(frame.polyhedra[p], static_cast<int>(p), code0, ray, margins, cands);
+    polyhedron_candidates(frame.polyhedra[p], static_cast<int>(p), code0, ray, tau_near, margins, cands);
     code0 += static_cast<std::uint32_t>(frame.polyhedra[p].faces.size());
   }
   // The answer: the nearest (largest tau) candidate that is valid beyond doubt; the first wins a tie.

@@ -1,6 +1,8 @@
 // The ground truth of stage F's visibility, sharing no code with the kernel, its twin or the setup:
 // per sample, the nearest face the ray enters whose entry point lies inside every other face plane
-// of its polyhedron (a direct point-in-polyhedron test, not the tau_in/tau_out bookkeeping).
+// of its polyhedron (a direct point-in-polyhedron test, not the tau_in/tau_out bookkeeping) and
+// beyond the frame's near plane (an entry point nearer than it is cut away: the object is not drawn
+// there, what lies behind shows).
 //
 // Arithmetic: binary128 (__float128) from the frame's doubles. c = (Xs T, Ys T, 1) is exact (a
 // double times a dyadic of <= 14 bits); every later quantity (n.c, t = d/(n.c), the residual
@@ -14,7 +16,7 @@
 // get wrong within that is flagged: the residual against plane g corresponds to
 // tau_g - tau_f = r_g tau_f / d_g, so an entry point within 2 margins.tau |d_g| t of plane g
 // (d_g != 0), or with |n_g.c| <= margins.den (d_g = 0) is borderline; so is an entry face with
-// tau <= margins.tau (near t = infinity); the sample is `uncertain` when a borderline candidate
+// tau <= margins.tau (near t = infinity) or within 2 margins.tau of 1/near; the sample is `uncertain` when a borderline candidate
 // could be at least as near as the answer, or two valid candidates' tau lie within 2 margins.tau.
 #pragma once
 

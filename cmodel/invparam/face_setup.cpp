@@ -1,5 +1,8 @@
 #include "invparam/face_setup.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "common/error.hpp"
@@ -31,19 +34,21 @@ InvparamFaceValues invparam_face_values(const EyeFace& face, double tan_half_fov
     return -(nx * (t * xs) + ny * (t * ys) + nz);
   };
   const Quad kx = -(nx * t) * (2 / l), ky = -(ny * t) * (2 / l);
+  const int last = size - 1;
+  const Quad corners[4] = {den(0, -1), den(last, -1), den(0, last), den(last, last)};
+  Quad den_max = 0;  // the value is linear in i, j: its largest |.| is at a corner
+  for (const Quad c : corners) den_max = std::max(den_max, quad_abs(c));
   InvparamFaceValues v;
-  v.az = face.d != 0;
+  // tau's largest |.| on the lattice is den_max / |Num|: a face whose tau would leave the word
+  // (the plane nearer than den_max / kValueLimit) is decided as through the eye (face_setup.hpp).
+  v.az = face.d != 0 && den_max < Quad(kValueLimit) * quad_abs(num);
+  v.through_eye = face.d != 0 && !v.az;
   v.as = num < 0;
   const Quad scale = v.az ? num : Quad(1);
   v.start = den(0, -1) / scale;
   v.step_x = kx / scale;
   v.step_y = ky / scale;
-  const int last = size - 1;
-  const Quad corners[4] = {den(0, -1), den(last, -1), den(0, last), den(last, last)};
-  for (const Quad c : corners) {
-    const Quad a = quad_abs(c / scale);
-    if (a > v.corner_max) v.corner_max = a;
-  }
+  v.corner_max = den_max / quad_abs(scale);
   return v;
 }
 
@@ -88,12 +93,13 @@ void invparam_quantize(Quad value, int w, int frac_bits, std::uint64_t& hi, std:
   lo = static_cast<std::uint64_t>(bits);
 }
 
-double invparam_error_bound_lsb(int i, int j) { return (i + j + 2) * (0.5 + 1.0 / (1 << 28)); }
+double invparam_error_bound_lsb(int i, int j) { return (i + j + 2) * (0.5 + 1.0 / (1 << 14)); }
 
 InvparamSetupDouble invparam_setup_double(const ScreenFrame& frame, const InvparamLattice& lattice, double eps) {
   InvparamSetupDouble s;
   s.size = lattice.size();
   s.eps = eps;
+  s.tau_near = frame.near > 0 ? 1.0 / frame.near : std::numeric_limits<double>::infinity();
   const double t = frame.tan_half_fov, l = s.size;
   const std::vector<InvparamFaceOrigin> list = invparam_face_list(frame);
   for (const EyePolyhedron& p : frame.polyhedra) s.object_faces.push_back(static_cast<int>(p.faces.size()));
@@ -103,7 +109,7 @@ InvparamSetupDouble invparam_setup_double(const ScreenFrame& frame, const Invpar
     const double den = -(face.nx * (t * (1 / l - 1)) + face.ny * (t * (-1 / l - 1)) + face.nz);
     const double kx = -(face.nx * t) * (2 / l), ky = -(face.ny * t) * (2 / l);
     InvparamFaceDouble d;
-    d.az = num != 0;
+    d.az = invparam_face_values(face, t, s.size).az;  // the kernel's rule, in binary128
     d.as = num < 0;
     const double scale = d.az ? num : 1.0;
     d.start = den / scale;

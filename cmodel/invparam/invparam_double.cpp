@@ -1,5 +1,6 @@
 #include "invparam/invparam_double.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace cig {
@@ -39,7 +40,7 @@ InvparamSampleDouble sample_step(const InvparamSetupDouble& s, std::vector<doubl
       plane_step(s.faces[f], running[f], s.eps, r);
     }
     base += static_cast<std::size_t>(m);
-    if (r.tau_in < kMax && r.tau_in > r.tau_out && r.tau_in > out.tau) {
+    if (r.tau_in < std::min(kMax, s.tau_near) && r.tau_in > r.tau_out && r.tau_in > out.tau) {
       out.tau = r.tau_in;
       out.code = r.hit_pl;
       out.hit = true;

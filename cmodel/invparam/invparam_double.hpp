@@ -3,10 +3,11 @@
 // step_x once per column and step_y once per row) on the unquantized setup
 // (invparam_setup_double, face_setup.hpp) in double.
 //
-// Error of its incremental value at sample (i, j), |value| < 128 on the lattice: the setup's few
-// roundings (<= 8 x 2^-53 x 128 = 2^-43) plus one rounding per add, i + j + 1 adds of at most
-// 2^-53 x 128 = 2^-46 each: invparam_double_error_bound(i, j) = (i + j + 9) 2^-46, stated loosely
-// (about the W = 52 kernel's bound: a 64-bit kernel is 2^12 times more precise than this twin).
+// Error of its incremental value at sample (i, j), |value| <= V on the lattice (V = max(128, the
+// faces' largest corner_max, face_setup.hpp)): the setup's few roundings (<= 8 x 2^-53 V) plus one
+// rounding per add, i + j + 1 adds of at most 2^-53 V each: invparam_double_error_bound(i, j, V) =
+// (i + j + 9) 2^-53 V, stated loosely (at V = 128 about the W = 52 kernel's bound: a 64-bit kernel
+// is 2^12 times more precise than this twin; a face plane 1 mm from the eye makes V ~ 1000).
 #pragma once
 
 #include <cstdint>
@@ -25,6 +26,8 @@ struct InvparamSampleDouble {
 // Every sample of the L x L lattice, row-major: result[j L + i] is column i, row j.
 std::vector<InvparamSampleDouble> invparam_double(const InvparamSetupDouble& setup);
 
-inline double invparam_double_error_bound(int i, int j) { return (i + j + 9) * 0x1p-46; }
+inline double invparam_double_error_bound(int i, int j, double value_max = 128) {
+  return (i + j + 9) * 0x1p-53 * (value_max > 128 ? value_max : 128);
+}
 
 }  // namespace cig

@@ -22,11 +22,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-// A word's value: code 2^-(W - kWordIntBits) (word.hpp), exact in long double up to 64 bits.
+// A word's value: code 2^-(W - 8) (word.hpp), exact in long double up to 64 significant bits.
 template <int W>
 double word_value(const hls::Word<W>& w) {
   const __int128 code = static_cast<__int128>((static_cast<unsigned __int128>(w.high_limb()) << 64) | w.low_limb());
-  return static_cast<double>(std::ldexp(static_cast<long double>(code), -(W - hls::kWordIntBits)));
+  return static_cast<double>(std::ldexp(static_cast<long double>(code), -hls::word_frac_bits(W)));
 }
 
 // The bit-accurate kernel, a column at a time: the host's column values (one add of step_x per
@@ -42,12 +42,13 @@ InvparamHits fixed_hits(const ScreenFrame& frame, const InvparamLattice& lattice
   h.origin = setup.origin;
   h.saturated = setup.saturated;
   h.out_of_range = setup.out_of_range;
+  h.through_eye = setup.through_eye;
   auto column = std::make_unique<hls::InvparamColumn<W>>();
   std::vector<hls::InvparamSample<W>> out(hls::kMaxSamplesPerColumn);
   hls::invparam_first_column(*setup.faces, *column);
   for (int i = 0; i < L; ++i) {
     if (i > 0) hls::invparam_next_column(*setup.faces, *column);
-    hls::invparam_column(*setup.faces, *column, L, setup.eps, out.data());
+    hls::invparam_column(*setup.faces, *column, L, setup.eps, setup.tau_near, out.data());
     for (int j = 0; j < L; ++j) {
       if (!out[std::size_t(j)].hit) continue;
       const std::size_t idx = std::size_t(j) * std::size_t(L) + std::size_t(i);
@@ -68,7 +69,7 @@ constexpr auto kFixedHits = fixed_table(std::make_integer_sequence<int, kMaxWord
 
 InvparamHits double_hits(const ScreenFrame& frame, const InvparamLattice& lattice) {
   // RGeps as the 64-bit kernel has it: -(L + 1) LSB of 2^-56.
-  const double eps = std::ldexp(double(invparam_eps_code(lattice.size())), -(64 - hls::kWordIntBits));
+  const double eps = std::ldexp(double(invparam_eps_code(lattice.size())), -hls::word_frac_bits(64));
   const std::vector<InvparamSampleDouble> s = invparam_double(invparam_setup_double(frame, lattice, eps));
   InvparamHits h;
   h.size = lattice.size();
@@ -294,6 +295,8 @@ class InvparamEngine : public RasterEngine {
     // Not drops (invparam_engine.hpp): faces drawn with clamped words, their visibility perhaps wrong.
     r["setup_values_saturated"] = h.saturated;
     r["faces_out_of_word_range"] = h.out_of_range;
+    // Faces whose plane passes within 2^-20 m of the eye, decided as through it (face_setup.hpp).
+    r["faces_through_eye"] = h.through_eye;
     r["dropped"] = {{"polygons_not_drawn", polygons_not_drawn(frame)},
                     {"light_points_not_drawn", frame.light_points.size()},
                     {"samples_on_undrawn_faces", undrawn}};

@@ -45,7 +45,7 @@ struct InvparamHits {
   std::vector<std::int32_t> face;          // the visible face's index in the setup's face list, -1: none
   std::vector<double> tau;                 // its tau = 1/Z (1/m), the W-bit word's value
   std::vector<InvparamFaceOrigin> origin;  // the setup's face list: where face f comes from
-  int saturated = 0, out_of_range = 0;
+  int saturated = 0, out_of_range = 0, through_eye = 0;
 };
 
 // The bit-accurate kernel at W = bits (kMinWordBits..kMaxWordBits) over the frame's polyhedra, a

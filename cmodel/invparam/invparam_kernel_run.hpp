@@ -21,7 +21,7 @@ std::vector<hls::InvparamSample<W>> invparam_run_kernel(const InvparamSetup<W>& 
   hls::invparam_first_column(*setup.faces, *column);
   for (int i = 0; i < l; ++i) {
     if (i > 0) hls::invparam_next_column(*setup.faces, *column);
-    hls::invparam_column(*setup.faces, *column, l, setup.eps, out.get());
+    hls::invparam_column(*setup.faces, *column, l, setup.eps, setup.tau_near, out.get());
     for (int j = 0; j < l; ++j) result[static_cast<std::size_t>(j) * l + i] = out[j];
   }
   return result;

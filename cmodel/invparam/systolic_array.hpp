@@ -62,7 +62,8 @@ struct InvparamScene {
   std::vector<FaceSetup<W>> faces;
   std::vector<ObjectSpan> objects;
   ParCode background;
-  Word<W> eps;  // RGeps, a negative tolerance
+  Word<W> eps;                            // RGeps, a negative tolerance
+  Word<W> tau_near = hls::word_max<W>();  // RGnear: 1/near (the largest code: no near plane)
 };
 
 enum class StreamMode { kFull, kCoveredColumns };
@@ -272,12 +273,12 @@ ArrayRun<W> run_array_frame(std::vector<PpState<W>>& pp, const std::vector<Strea
   throw std::logic_error("run_systolic_array: the array did not drain");
 }
 
-// The same from power-on (pp_reset with RGeps = eps).
+// The same from power-on (pp_reset with RGeps = eps, RGnear = tau_near).
 template <int W, class Observer = NoArrayObserver>
-ArrayRun<W> run_array_stream(const std::vector<StreamCode<W>>& stream, const Word<W>& eps, int columns, int n_pp,
-                             const ArrayPacing& pacing = {}, Observer&& observer = Observer{}) {
+ArrayRun<W> run_array_stream(const std::vector<StreamCode<W>>& stream, const Word<W>& eps, const Word<W>& tau_near,
+                             int columns, int n_pp, const ArrayPacing& pacing = {}, Observer&& observer = Observer{}) {
   std::vector<PpState<W>> pp(static_cast<std::size_t>(n_pp));
-  for (PpState<W>& st : pp) hls::pp_reset(st, eps);
+  for (PpState<W>& st : pp) hls::pp_reset(st, eps, tau_near);
   return run_array_frame(pp, stream, columns, pacing, std::forward<Observer>(observer));
 }
 
@@ -286,7 +287,8 @@ template <int W>
 ArrayRun<W> run_systolic_array(const InvparamScene<W>& scene, int columns, int n_pp,
                                StreamMode mode = StreamMode::kFull, const ArrayPacing& pacing = {}) {
   if (columns < 1 || n_pp < 1) throw std::invalid_argument("run_systolic_array: columns and n_pp must be >= 1");
-  return run_array_stream(build_frame_stream(scene, columns, n_pp, mode), scene.eps, columns, n_pp, pacing);
+  return run_array_stream(build_frame_stream(scene, columns, n_pp, mode), scene.eps, scene.tau_near, columns, n_pp,
+                          pacing);
 }
 
 // ---- Frame time and throughput (systolic_array.cpp) ---------------------------------------------
@@ -315,6 +317,7 @@ template <int W>
 InvparamScene<W> scene_of_setup(const InvparamSetup<W>& setup) {
   InvparamScene<W> s;
   s.eps = setup.eps;
+  s.tau_near = setup.tau_near;
   s.background = hls::ParCode(0xffffff);
   int first = 0;
   for (int o = 0; o < setup.faces->objects; ++o) {

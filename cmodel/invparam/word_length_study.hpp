@@ -22,8 +22,9 @@
 //                 per sample (start + i step_x + (j + 1) step_y, exact on integers: what the
 //                 incremental adds give); nearest = the smallest Z among the faces covering the sample
 //   c  inverse-z  an inverse Z-buffer: 1/Z is affine in screen space, so each face's tau is the
-//                 kernel's (face_setup.hpp: start, steps rounded in the kernel's word, kWordIntBits
-//                 = 8 integer bits) added incrementally; nearest = the largest 1/Z
+//                 kernel's (face_setup.hpp: start, steps rounded to the kernel's W - 8 fractional
+//                 bits, 8 integer bits: these views' values stay below 128, so the kernel's guard
+//                 bits would change nothing) added incrementally; nearest = the largest 1/Z
 //   d  exact-z    Z of each covering face computed exactly per sample (a divider), then rounded to
 //                 W bits with kZIntBits integer bits: the quantization alone, no interpolation
 // b, c and d take each face's exact coverage (the ray enters the face inside every other plane of
@@ -38,8 +39,8 @@
 // (the seed's "right visible plane" is the panel against the wall, 1 mm behind it).
 // Samples the truth calls uncertain (within binary128's margin of an edge) are left out and counted.
 //
-// The bound for method a. The kernel's tau at sample (i, j) is within (i + j + 2)(1/2 + 2^-28) LSB
-// of the exact tau (face_setup.hpp), LSB = 2^-(W - 8), so within L (1 + 2^-27) LSB on an L x L
+// The bound for method a. The kernel's tau at sample (i, j) is within (i + j + 2)(1/2 + 2^-14) LSB
+// of the exact tau (face_setup.hpp), LSB = 2^-(W - 8), so within L (1 + 2^-13) LSB on an L x L
 // lattice (i + j + 2 <= 2L). A depth error is t^2 times the tau error (dt = -dtau / tau^2), so
 // the depth is within 1 mm when L R^2 2^-(W-8) <= 1 mm. The right plane: the panel's and the wall's
 // tau differ by 1 mm / R^2 (1/(R - 1 mm) - 1/R), and each of the two can be off by L LSB in

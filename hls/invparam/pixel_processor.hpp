@@ -15,7 +15,7 @@
 //   Col  2: Input -> RGparP (background); RGpar, RGobj on VT.   3: RGtin = MAX, RGtout = RGobj =
 //        the minimal code, RGpar = RGparP.   4: nothing.
 //   Pln  2: Input -> RGh.   3: RGres = Input + RGh (SM), z, s -> Tz, Ts.   4: by Az, As, s (below).
-//   Obj  2: c = RGtin > RGtout.   3: if c': c = MAX > RGtin.   4: if c': c = RGtin > RGobj, if c:
+//   Obj  2: c = RGtin > RGtout.   3: if c': c = RGnear > RGtin.   4: if c': c = RGtin > RGobj, if c:
 //        RGobj = RGtin, RGpar = RGparP; then RGtin = MAX, RGtout = the minimal code.
 // Choices where the seed is silent or ambiguous:
 //  * "The minimal code" that RGtout and RGobj start from is the word 0 (tau = 0, a point at
@@ -29,6 +29,9 @@
 //  * Ties: Pln clock 4 with Az = 1, As = 0, s = 0 takes the face when c = 0, i.e. RGres <= RGtin,
 //    so of two entry faces at the same tau the later one gives the colour (the seed's rule).
 //  * RGeps is loaded once (pp_reset), a configuration register: the seed does not say how.
+//  * RGnear (ours, issue 29): Obj clock 3 compares RGtin with RGnear = 1/near, a configuration
+//    register loaded with RGeps, where the seed puts its constant MAX on bus A; RGnear = MAX is the
+//    seed's PP. The near plane cuts away what lies nearer (visibility.hpp).
 #pragma once
 
 #include "hls/invparam/tokens.hpp"
@@ -37,7 +40,7 @@ CIG_HLS_BEGIN_NAMESPACE
 
 template <int W>
 struct PpState {
-  Word<W> RGres, RGh, RGtin, RGtout, RGobj, RGeps;
+  Word<W> RGres, RGh, RGtin, RGtout, RGobj, RGeps, RGnear;
   ParCode RGpar, RGparP;
   Command RGI;
   bool Tz = false, Ts = false, Tc = false;  // z, s, c delayed one clock
@@ -61,13 +64,15 @@ struct PpOutputs {
   bool ends_column = false;  // this clock is a T_Col's clock 4 (pp_ends_column)
 };
 
-// Power-on / configuration: every register 0 except RGtin = MAX and RGeps = eps (< 0).
+// Power-on / configuration: every register 0 except RGtin = MAX, RGeps = eps (< 0) and RGnear =
+// tau_near (1/near; MAX: no near plane).
 template <int W>
-CIG_HLS_INLINE void pp_reset(PpState<W>& st, const Word<W>& eps) {
+CIG_HLS_INLINE void pp_reset(PpState<W>& st, const Word<W>& eps, const Word<W>& tau_near) {
   st = PpState<W>();
   st.RGres = st.RGh = st.RGtout = st.RGobj = word_zero<W>();
   st.RGtin = word_max<W>();
   st.RGeps = eps;
+  st.RGnear = tau_near;
 }
 
 // The control unit's counter: start restarts it; a 4-word token counts 1..4; an empty code is
@@ -153,7 +158,7 @@ template <int W>
 CIG_HLS_INLINE bool pp_obj_clock(PpState<W>& st, unsigned clock) {
   bool c = false;
   if (clock == 2) c = word_greater(st.RGtin, st.RGtout);
-  if (clock == 3 && st.Tc) c = word_greater(word_max<W>(), st.RGtin);
+  if (clock == 3 && st.Tc) c = word_greater(st.RGnear, st.RGtin);
   if (clock == 4) {
     if (st.Tc) {
       c = word_greater(st.RGtin, st.RGobj);
@@ -201,7 +206,8 @@ CIG_HLS_INLINE PpOutputs<W> pp_clock(PpState<W>& st, const Word<W>& input, const
   return out;
 }
 
-// The top function's width: the seed's PP has six 64-bit registers (its word for 100 km).
+// The top function's width: the seed's PP has six 64-bit registers (its word for 100 km); here
+// 80 bits with the guard bits (word.hpp).
 constexpr int kPpTopWordBits = 64;
 
 // Top function (HLS): one clock of one pixel processor.

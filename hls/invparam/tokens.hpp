@@ -4,7 +4,7 @@
 // The token stream of seed 002's systolic array (SPEC F; digest: notes/seed002_digest.md). The
 // Input bus carries one W-bit word per clock; a token is 4 words (T_Pln, T_Obj, T_Col) or 1 word
 // (the empty code). Word 1 of every token carries its 5-bit command in the word's top 5 bits
-// (bits W-1 .. W-5), the rest zero:
+// (bits word_bits(W)-1 .. word_bits(W)-5), the rest zero:
 //
 //   bit   4 3   kind: 00 Empty, 01 Col, 10 Obj, 11 Pln
 //         2     reserved, 0
@@ -32,7 +32,7 @@
 //
 // Word fields are read and written only with word.hpp's operations (Word<W> may become a wider
 // type): x + x is a left shift by one and the sign flag s reads the top bit, so the command field
-// is 5 x (read s, double) and the code field W - 24 doublings then 24 x (read s, double). These
+// is 5 x (read s, double) and the code field word_bits(W) - 24 doublings then 24 x (read s, double). These
 // are wiring in hardware; an HLS tool folds the chain of constant shifts.
 #pragma once
 
@@ -72,7 +72,7 @@ CIG_HLS_INLINE Word<W> word_zero() {
 // The word whose low `NB` bits are `code` (Horner: x = 2x + bit), the rest zero.
 template <int W, int NB>
 CIG_HLS_INLINE Word<W> word_of_low_bits(const UInt<NB>& code) {
-  static_assert(NB < W, "the field must leave the sign bit free");
+  static_assert(NB < word_bits(W), "the field must leave the sign bit free");
   const Word<W> one(1);
   Word<W> x = word_zero<W>();
   for (int k = NB - 1; k >= 0; --k) {
@@ -96,15 +96,17 @@ CIG_HLS_INLINE UInt<NB> word_top_bits(Word<W> w) {
 // The low `NB` bits of w: shift them to the top (W - NB doublings), then read them.
 template <int NB, int W>
 CIG_HLS_INLINE UInt<NB> word_low_bits(Word<W> w) {
-  for (int k = 0; k < W - NB; ++k) w = word_add(w, w);
+  constexpr int kBits = word_bits(W);
+  for (int k = 0; k < kBits - NB; ++k) w = word_add(w, w);
   return word_top_bits<NB, W>(w);
 }
 
 // Word 1 of a token: the command in the top 5 bits.
 template <int W>
 CIG_HLS_INLINE Word<W> command_word(const Command& c) {
+  constexpr int kBits = word_bits(W);
   Word<W> x = word_of_low_bits<W, kCommandBits>(c);
-  for (int k = 0; k < W - kCommandBits; ++k) x = word_add(x, x);
+  for (int k = 0; k < kBits - kCommandBits; ++k) x = word_add(x, x);
   return x;
 }
 

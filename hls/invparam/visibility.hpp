@@ -1,12 +1,12 @@
 // Inverse-parameter visibility (seed 002, Fig. 1; SPEC F), bit-accurate: one column of samples.
 //
-// Per sample (i, j) and per face the PP works on one W-bit word (word.hpp, Word<W>: kWordIntBits = 8
-// integer bits with the sign, W - 8 fractional), the face's running value
+// Per sample (i, j) and per face the PP works on one word (word.hpp, Word<W>: W + 16 bits, 24 of
+// them integer with the sign, W - 8 fractional), the face's running value
 //     az = 1: tau_ij = Den_ij / Num (= 1/t)      az = 0: Den_ij (Num = 0: the eye lies in the plane)
 // with the seed's inward normals (Den > 0: the ray enters the face's half-space). The host gives
 // each face's value at column i, row -1 (InvparamColumn: the start, plus step_x once per column,
 // invparam_first_column / invparam_next_column); each row adds step_y (the PP's RGh), exactly as the
-// seed's chain of PPs does, so the value at row j is start + i step_x + (j + 1) step_y on W-bit
+// seed's chain of PPs does, so the value at row j is start + i step_x + (j + 1) step_y on word
 // codes: no rounding in the kernel, only the setup's (cmodel/invparam/face_setup.hpp states the error bound).
 //
 // The per-face rule is Fig. 1 as the PP computes it (seed chapter 4, token T_Pln, clock 4), on the
@@ -18,8 +18,11 @@
 //   az = 1, As = 1, s = 1: nothing (moving away from a face the eye is inside of)
 // (Fig. 1's "tau > 0 and tau < tau_in" for an entry face differs in two corner cases only: the PP
 // takes a later face of equal tau, and a zero tau (a ray parallel to a face the eye is outside of)
-// sets tau_in = 0, a miss, which is right.) Per object (token T_Obj): the object is hit iff an
-// entry face was seen (tau_in < MAX), tau_in > tau_out, and it is nearer than the nearest so far:
+// sets tau_in = 0, a miss, which is right.) Per object (token T_Obj): the object is hit iff its
+// last entry lies beyond the near plane (tau_in < RGnear = 1/near: an entry face was seen, and what
+// the near plane cuts away is not drawn, so what lies behind shows, as in the engines that clip
+// polygons; RGnear = MAX without a near plane: the seed's test tau_in < MAX), tau_in > tau_out, and
+// it is nearer than the nearest so far:
 // tau_in > tau_hit (RGobj); the first object wins a tie. tau_out and tau_hit start at 0 (Fig. 1:
 // t = infinity), tau_in at MAX.
 #pragma once
@@ -101,7 +104,8 @@ void plane_step(const FaceSetup<W>& face, const Word<W>& value, const Word<W>& e
 
 // One sample (row): every object's faces in order, the running values advanced by step_y.
 template <int W>
-InvparamSample<W> sample_step(const InvparamFaces<W>& faces, Word<W> running[kMaxFaces], const Word<W>& eps) {
+InvparamSample<W> sample_step(const InvparamFaces<W>& faces, Word<W> running[kMaxFaces], const Word<W>& eps,
+                              const Word<W>& tau_near) {
   InvparamSample<W> out;  // tau_hit = 0, no hit
   int base = 0;
   for (int o = 0; o < kMaxObjects; ++o) {
@@ -116,8 +120,8 @@ InvparamSample<W> sample_step(const InvparamFaces<W>& faces, Word<W> running[kMa
       plane_step(faces.face[f], running[f], eps, r);
     }
     base += faces.object_faces[o];
-    // T_Obj: an entry face seen, the entry before the exit, nearer than the nearest so far.
-    if (word_greater(word_max<W>(), r.tau_in) && word_greater(r.tau_in, r.tau_out) && word_greater(r.tau_in, out.tau)) {
+    // T_Obj: the last entry beyond the near plane, the entry before the exit, nearer than the nearest so far.
+    if (word_greater(tau_near, r.tau_in) && word_greater(r.tau_in, r.tau_out) && word_greater(r.tau_in, out.tau)) {
       out.tau = r.tau_in;
       out.code = r.hit_pl;
       out.hit = true;
@@ -128,26 +132,27 @@ InvparamSample<W> sample_step(const InvparamFaces<W>& faces, Word<W> running[kMa
 
 }  // namespace invparam_detail
 
-// One column of `rows` samples (W-bit words) (rows <= kMaxSamplesPerColumn), top to bottom: out[j] is sample
-// row j's visible face. eps is RGeps (a negative tolerance for the az = 0 faces' Den).
+// One column of `rows` samples (rows <= kMaxSamplesPerColumn), top to bottom: out[j] is sample row
+// j's visible face. eps is RGeps (a negative tolerance for the az = 0 faces' Den), tau_near RGnear
+// (1/near, or word_max without a near plane).
 template <int W>
 void invparam_column(const InvparamFaces<W>& faces, const InvparamColumn<W>& column, int rows, const Word<W>& eps,
-                     InvparamSample<W> out[kMaxSamplesPerColumn]) {
+                     const Word<W>& tau_near, InvparamSample<W> out[kMaxSamplesPerColumn]) {
   Word<W> running[kMaxFaces];  // each face's value at the row above (the token from the PP above)
   for (int f = 0; f < kMaxFaces; ++f) running[f] = column.value[f];
   for (int j = 0; j < kMaxSamplesPerColumn; ++j) {
     if (j >= rows) break;
-    out[j] = invparam_detail::sample_step(faces, running, eps);
+    out[j] = invparam_detail::sample_step(faces, running, eps, tau_near);
   }
 }
 
-// The HLS top in the default word: W = 64 (the seed's "64 bits to 100 km").
+// The HLS top in the default word: W = 64 (the seed's "64 bits to 100 km"; an 80-bit register).
 constexpr int kDefaultWordBits = 64;
 inline void invparam_column_top(const InvparamFaces<kDefaultWordBits>& faces,
                                 const InvparamColumn<kDefaultWordBits>& column, int rows,
-                                const Word<kDefaultWordBits>& eps,
+                                const Word<kDefaultWordBits>& eps, const Word<kDefaultWordBits>& tau_near,
                                 InvparamSample<kDefaultWordBits> out[kMaxSamplesPerColumn]) {
-  invparam_column<kDefaultWordBits>(faces, column, rows, eps, out);
+  invparam_column<kDefaultWordBits>(faces, column, rows, eps, tau_near, out);
 }
 
 CIG_HLS_END_NAMESPACE

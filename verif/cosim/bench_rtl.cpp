@@ -4,8 +4,8 @@
 //   * overlap/6p: scenes/small/overlap.polys.json;
 //   * airfield/9p, airfield/7p2t: the centre channel of frame 0 of scenes/airfield.json;
 //   * depth10/9p: scenes/stress/depth10.polys.json;
-//   * invparam/polyhedra/w64n64: the inverse-parameter array (ip_array, W = 64, N_PP = 64, its
-//     model Verilated for speed) alone on scenes/polyhedra.json frame 0, centre channel, set up on a
+//   * invparam/polyhedra/w64n64: the inverse-parameter array (ip_array for the seed's 64-bit word,
+//     80-bit registers, N_PP = 64, its model Verilated for speed) alone on scenes/polyhedra.json frame 0, centre channel, set up on a
 //     64 x 64 lattice; frames back to back without reset; counters cycles/s, faces/s, samples/s.
 // The setup kernel's level-0 windows are built once (not timed); each iteration runs one frame:
 // the table writes (the fog table only the first time), the frame, the read-out of every pixel.
@@ -90,7 +90,7 @@ struct IpInput {
   std::vector<cig::invparam::StreamCode<64>> stream;
   int columns = 0;
   std::int64_t faces = 0;
-  cig::hls::Word<64> eps;
+  cig::hls::Word<64> eps, tau_near;  // RGeps, RGnear (the scene's near plane)
 };
 const IpInput& polyhedra_ip_input() {
   static const IpInput input = [] {
@@ -105,6 +105,7 @@ const IpInput& polyhedra_ip_input() {
     in.stream = cig::invparam::build_frame_stream(s, in.columns, 64, cig::invparam::StreamMode::kFull);
     in.faces = std::int64_t(s.faces.size());
     in.eps = s.eps;
+    in.tau_near = s.tau_near;
     return in;
   }();
   return input;
@@ -118,7 +119,7 @@ void run_ip_rtl(benchmark::State& state) {
     return;
   }
   const IpInput& in = polyhedra_ip_input();
-  rtl->reset(cig::cosim::word_bits<64>(in.eps));
+  rtl->reset(cig::cosim::rtl_word<64>(in.eps), cig::cosim::rtl_word<64>(in.tau_near));
   double cycles = 0;
   for (auto _ : state) cycles = double(cig::cosim::ip_rtl_run_frame<64>(*rtl, in.stream, in.columns));
   const double n = double(state.iterations());

@@ -61,7 +61,9 @@ void CosimCommand::add_options(CLI::App& app) {
   invparam_only.push_back(
       app.add_option("--vt-stalls", vt_stalls, "invparam: percent of cycles the VT consumer takes nothing (0..75)")
           ->check(CLI::Range(0, 75)));
-  invparam_only.push_back(app.add_option("--bits", word_bits, "invparam: the word length W of the RTL (default 64)"));
+  invparam_only.push_back(app.add_option(
+      "--bits", word_bits,
+      "invparam: the seed's word length W (hls Word<W>; the RTL's registers have W + 16 bits; default 64)"));
   invparam_only.push_back(app.add_option(
       "--pps", pps, "invparam: pixel processors N_PP (default 64): frames set up on an N_PP x N_PP lattice"));
   app.add_option("--report", report_file, "write a JSON report");

@@ -1,7 +1,9 @@
 // cig cosim --processor invparam: a scene's frames (stage B's polyhedra, each set up on an
 // N_PP x N_PP lattice) through the Verilated ip_array and the clock-level model, back to back
-// without reset (ip_cosim.hpp); per frame the faces, samples, tokens, codes, the cycles of both,
-// the held cycles and the mismatches.
+// without reset (ip_cosim.hpp; each frame's setup gives RGeps and RGnear, the scene's near plane,
+// written between frames when they change); per frame the faces, samples, tokens, codes, the
+// cycles of both, the held cycles and the mismatches. --bits is the seed's word W (hls Word<W>):
+// the RTL's registers have W + 16 bits.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -20,14 +22,14 @@
 namespace cig::cli {
 namespace {
 
-// The frames before any output: each must have polyhedra (or nothing at all) within the kernel's
-// capacities.
+// The frames before any output: each within the kernel's capacities, from a scene with polyhedra
+// (a frame whose channel sees none is an empty frame) or with nothing at all.
 std::vector<ScreenFrame> invparam_frames(const FrameJobs& jobs, const std::string& input) {
   std::vector<ScreenFrame> frames;
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     ScreenFrame f = jobs.screen_frame(k);
     const std::string where = "frame " + std::to_string(jobs.frame(k)) + " channel " + std::to_string(jobs.channel(k));
-    if (f.polyhedra.empty() && !f.polygons.empty())
+    if (f.polyhedra.empty() && !f.lists_polyhedra && !f.polygons.empty())
       throw InputError(input, where,
                        "--processor invparam draws convex polyhedra (scene objects with \"polyhedron\": true); this "
                        "image has " +
@@ -105,6 +107,7 @@ int CosimCommand::run_invparam() {
   rep["input"] = input;
   rep["processor"] = "invparam";
   rep["word_bits"] = cfg.w;
+  rep["register_bits"] = cfg.register_bits();
   rep["pixel_processors"] = cfg.n_pp;
   rep["runs"] = nlohmann::ordered_json::array();
   long long checks = 0, mismatches = 0, bad_cycles = 0;

@@ -16,13 +16,14 @@ TraceCost trace_cost(const std::string& configuration) {
   // Bytes and seconds per traced cycle, measured (rtl/README.md "Tracing"): the quadtree's 512-line
   // configurations on airfield frame 0, channel 1 (7p2t: the whole frame, 883 MB, about 95 s more
   // on an idle machine; 9p: cycles 20000:29999), its 64-line ones on the whole of
-  // scenes/small/overlap.polys.json, stage F's on scenes/polyhedra.json frame 0. The bytes follow
-  // the signals that change, so they are typical figures; the seconds are what the trace adds to
-  // the run, on the shared 2-core machine (at a load of 4 to 6 but for 7p2t's).
+  // scenes/small/overlap.polys.json, stage F's on scenes/polyhedra.json frame 0 (80- and 73-bit
+  // registers, 2026-11-27). The bytes follow the signals that change, so they are typical figures;
+  // the seconds are what the trace adds to the run, on the shared 2-core machine (at a load of 4 to
+  // 6 but for 7p2t's; stage F's at about 2).
   static const std::map<std::string, TraceCost> costs = {
       {"6p", {2200, 2.0e-4}},          {"4p2t", {8000, 9.0e-4}},        {"9p", {1600, 5.5e-4}},
-      {"7p2t", {6900, 7.5e-4}},        {"W=64, N_PP=8", {100, 2.9e-5}}, {"W=64, N_PP=64", {780, 2.2e-4}},
-      {"W=57, N_PP=16", {195, 4.4e-5}}};
+      {"7p2t", {6900, 7.5e-4}},        {"W=64, N_PP=8", {120, 2.9e-5}}, {"W=64, N_PP=64", {870, 2.3e-4}},
+      {"W=57, N_PP=16", {230, 5.3e-5}}};
   const auto it = costs.find(configuration);
   return it == costs.end() ? TraceCost{6900, 7.5e-4} : it->second;
 }

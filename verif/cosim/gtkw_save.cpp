@@ -136,8 +136,8 @@ std::vector<GtkwGroup> invparam_groups(const Picker& p) {
   const std::string a = "TOP.ip_array_cosim_tb.u_array.";
   std::vector<GtkwGroup> g;
   g.push_back({"input",
-               p.pick(a, {"clk_i", "rst_ni", "cfg_eps_valid_i", "in_valid_i", "in_start_i", "in_word_i", "in_ready_o",
-                          "advance"}),
+               p.pick(a, {"clk_i", "rst_ni", "cfg_valid_i", "cfg_near_i", "in_valid_i", "in_start_i", "in_word_i",
+                          "in_ready_o", "advance"}),
                {}});
   g.push_back({"VT bus", p.pick(a, {"vt_ready_i", "vt_valid_o", "vt_pp_o", "vt_par_o", "vt_obj_o", "col_done_o"}), {}});
   g.push_back(p.units("PPs", "PP", [&](int k) { return indexed(a, "g_pp", k, "u_pp"); },

@@ -9,8 +9,14 @@
 //   * col_done_o (the last PP does clock 4 of a T_Col) and the frame's cycle count.
 // The RTL's stimulus is computed from the RTL's own in_ready_o (host_offer: a word not taken stays
 // offered), not copied from the model. Frames run back to back without reset: the model keeps its
-// chain (run_array_frame's `pp`), the RTL its registers. The first mismatch is reported with the
-// frame, the cycle, the PP, the signal, the expected and the obtained value.
+// chain (run_array_frame's `pp`), the RTL its registers; a configuration write between two frames
+// (configure: RGeps and RGnear) changes both sides' before the next frame's first cycle. The first
+// mismatch is reported with the frame, the cycle, the PP, the signal, the expected and the
+// obtained value.
+//
+// Widths: the harness templates on the seed's word W (hls Word<W>); the RTL's registers, and its
+// parameter W, have hls::word_bits(W) = W + 16 bits (the guard bits, hls/invparam/word.hpp), 80
+// for the seed's 64-bit word. Words cross the interface below as IpWord, 128 bits.
 #pragma once
 
 #include <chrono>
@@ -30,32 +36,58 @@ namespace cig::cosim {
 
 // ---- The Verilated configurations (ip_rtl_runner.cpp) -------------------------------------------
 
+// A word of the RTL, LSB first: its register_bits() low bits (the rest zero). 128 bits hold hls
+// WideInt's widest register.
+__extension__ typedef unsigned __int128 IpWord;
+
+// The register of hls Word<W> as the RTL carries it: its word_bits(W) bits, two's complement.
+template <int W>
+IpWord rtl_word(const hls::Word<W>& w) {
+  constexpr int kBits = hls::word_bits(W);
+  static_assert(kBits <= 128, "the harness carries words in 128 bits");
+  const IpWord mask = kBits >= 128 ? ~IpWord(0) : (IpWord(1) << (kBits % 128)) - 1;
+  return (IpWord(w.high_limb()) << 64 | IpWord(w.low_limb())) & mask;
+}
+// The largest code of a `bits`-bit register (RGnear's reset value, the seed's MAX).
+inline IpWord rtl_word_max(int bits) { return (IpWord(1) << (bits - 1)) - 1; }
+// "0x..." without leading zeros.
+std::string ip_hex(IpWord v);
+
+// A configuration, named by the seed's word w (hls Word<w>, the harness's template parameter): the
+// Verilated ip_array's W is the register width, register_bits() = hls word_bits(w) = w + 16.
 struct IpRtlConfig {
   int w = 64, n_pp = 64;
+  int register_bits() const { return hls::word_bits(w); }
   std::string text() const { return "W=" + std::to_string(w) + ", N_PP=" + std::to_string(n_pp); }
 };
 std::vector<IpRtlConfig> ip_rtl_configs();
 
-// One Verilated ip_array, W <= 64: words are the low W bits of a std::uint64_t.
+// One Verilated ip_array: words of register_bits() bits (IpWord).
 class IpRtl {
  public:
   virtual ~IpRtl() = default;
-  virtual int w() const = 0;  // the model's public parameters (ip_array_cosim_tb)
+  // The model's public parameters (ip_array_cosim_tb): W, the register width, and N_PP.
+  virtual int register_bits() const = 0;
   virtual int n_pp() const = 0;
-  // Asynchronous reset, then one configuration cycle that writes RGeps of every PP.
-  virtual void reset(std::uint64_t eps) = 0;
+  // Asynchronous reset, then a configuration write of RGeps and RGnear of every PP (at the edge
+  // before the first cycle).
+  virtual void reset(IpWord eps, IpWord tau_near) = 0;
+  // A configuration write of RGeps and RGnear of every PP with the next cycle's stimulus: it
+  // lands at the edge that starts that cycle, so that the cycle sees the new values (between two
+  // frames: the next frame's first cycle), whatever the handshake.
+  virtual void configure(IpWord eps, IpWord tau_near) = 0;
   // Cycle t of the frame (from 1): its stimulus, then the edge that starts it; the outputs below
   // then show this cycle, before its own clock edge (the next call's).
-  virtual void cycle(std::int64_t t, bool in_valid, bool in_start, std::uint64_t in_word, bool vt_ready) = 0;
+  virtual void cycle(std::int64_t t, bool in_valid, bool in_start, IpWord in_word, bool vt_ready) = 0;
   // The frame is over (the trace of the next frame, trace_to, ends here).
   virtual void end_frame() = 0;
   virtual bool in_ready() const = 0;
   virtual bool vt_valid() const = 0;
   virtual int vt_pp() const = 0;
   virtual std::uint32_t vt_par() const = 0;
-  virtual std::uint64_t vt_obj() const = 0;
+  virtual IpWord vt_obj() const = 0;
   virtual bool col_done() const = 0;
-  virtual std::uint64_t pp_word(int k) const = 0;
+  virtual IpWord pp_word(int k) const = 0;
   virtual bool pp_start(int k) const = 0;
   virtual bool pp_valid(int k) const = 0;
   // FST of the next frame (trace_settings.hpp: its cycles 1..C, or the window first..last).
@@ -64,7 +96,7 @@ class IpRtl {
 };
 // nullptr when this build has no such configuration.
 std::unique_ptr<IpRtl> make_ip_rtl(int w, int n_pp);
-// The benchmark's model (W = 64, N_PP = 64, Verilated for speed, no tracing); in cig_cosim_fast.
+// The benchmark's model (w = 64, N_PP = 64, Verilated for speed, no tracing); in cig_cosim_fast.
 std::unique_ptr<IpRtl> make_fast_ip_rtl(int w, int n_pp);
 
 // ---- One frame's result -----------------------------------------------------------------------
@@ -80,17 +112,12 @@ struct IpFrameResult {
   bool ok() const { return mismatches == 0 && model_cycles == rtl_cycles; }
 };
 
-template <int W>
-std::uint64_t word_bits(const hls::Word<W>& w) {
-  static_assert(W <= 64, "the harness carries words in 64 bits");
-  return W == 64 ? w.low_limb() : w.low_limb() & ((std::uint64_t(1) << W) - 1);
-}
-
-// Tokens of a stream: codes that start a T_Pln, T_Obj or T_Col (the empty codes are not counted).
+// Tokens of a stream: codes that start a T_Pln, T_Obj or T_Col (the empty codes, word 0, are not
+// counted; the command lies in the register's top bits).
 template <int W>
 std::int64_t stream_tokens(const std::vector<invparam::StreamCode<W>>& s) {
   std::int64_t n = 0;
-  for (const auto& c : s) n += c.start && c.word.low_limb() != 0 ? 1 : 0;
+  for (const auto& c : s) n += c.start && hls::word_nonzero(c.word) ? 1 : 0;
   return n;
 }
 
@@ -100,13 +127,13 @@ namespace detail {
 class IpChecker {
  public:
   IpChecker(IpFrameResult& r, int frame) : r_(r), frame_(frame) {}
-  void expect(std::int64_t cycle, int pp, const char* signal, std::uint64_t expected, std::uint64_t got) {
+  void expect(std::int64_t cycle, int pp, const char* signal, IpWord expected, IpWord got) {
     ++r_.checks;
     if (expected == got) return;
     if (r_.mismatches++ == 0) {
       std::ostringstream o;
       o << "frame " << frame_ << ", cycle " << cycle << (pp >= 0 ? ", PP " + std::to_string(pp) : std::string()) << ", "
-        << signal << ": expected 0x" << std::hex << expected << ", got 0x" << got;
+        << signal << ": expected " << ip_hex(expected) << ", got " << ip_hex(got);
       r_.first = o.str();
     }
   }
@@ -131,7 +158,7 @@ class IpHost {
     if (t != t_ + 1) throw std::logic_error("ip cosim: the RTL and the model are out of step");
     const invparam::ArrayInput<W> in = invparam::host_offer(stream_, next_, holding_, t, pacing_);
     const bool vt_ready = !stall_hit(pacing_.seed, std::uint64_t(t), 1, pacing_.vt_stall_percent);
-    rtl_.cycle(t, in.ctrl.valid, in.ctrl.start, word_bits<W>(in.word), vt_ready);
+    rtl_.cycle(t, in.ctrl.valid, in.ctrl.start, rtl_word<W>(in.word), vt_ready);
     t_ = t;
     if (rtl_.in_ready()) {
       if (in.ctrl.valid && next_ < stream_.size()) ++next_;
@@ -196,7 +223,7 @@ class IpLockstep {
 
  private:
   void compare_pp(std::int64_t t, int k, const hls::Word<W>& word, const hls::PpCtrl& ctrl) {
-    check_.expect(t, k, "pp_word_o (RGres)", word_bits<W>(word), rtl_.pp_word(k));
+    check_.expect(t, k, "pp_word_o (RGres)", rtl_word<W>(word), rtl_.pp_word(k));
     check_.expect(t, k, "pp_start_o (Tctrl)", ctrl.start, rtl_.pp_start(k));
     check_.expect(t, k, "pp_valid_o (Tvalid)", ctrl.valid, rtl_.pp_valid(k));
   }
@@ -205,7 +232,7 @@ class IpLockstep {
     check_.expect(t, k, "VT driven by this PP (vt_valid_o && vt_pp_o == k)", drives, rtl_drives);
     if (!drives || !rtl_drives) return;
     check_.expect(t, k, "vt_par_o (RGpar)", par.value(), rtl_.vt_par());
-    check_.expect(t, k, "vt_obj_o (RGobj)", word_bits<W>(obj), rtl_.vt_obj());
+    check_.expect(t, k, "vt_obj_o (RGobj)", rtl_word<W>(obj), rtl_.vt_obj());
   }
 
   IpRtl& rtl_;
@@ -218,21 +245,35 @@ class IpLockstep {
 
 }  // namespace detail
 
-// The co-simulation of one configuration: the RTL and the model's chain, frames back to back.
+// The co-simulation of one configuration: the RTL and the model's chain, frames back to back. W is
+// the seed's word; the RTL's registers must have hls::word_bits(W) bits.
 template <int W>
 class IpCosim {
  public:
-  IpCosim(IpRtl& rtl, const hls::Word<W>& eps) : rtl_(rtl), chain_(std::size_t(rtl.n_pp())) {
-    if (rtl.w() != W)
-      throw std::logic_error("ip cosim: a W=" + std::to_string(W) + " harness on a W=" + std::to_string(rtl.w()) +
-                             " model");
-    reset(eps);
+  IpCosim(IpRtl& rtl, const hls::Word<W>& eps, const hls::Word<W>& tau_near)
+      : rtl_(rtl), chain_(std::size_t(rtl.n_pp())) {
+    if (rtl.register_bits() != hls::word_bits(W))
+      throw std::logic_error("ip cosim: a W=" + std::to_string(W) + " harness (" + std::to_string(hls::word_bits(W)) +
+                             "-bit registers) on a model of W=" + std::to_string(rtl.register_bits()) + " bits");
+    reset(eps, tau_near);
   }
-  // Power-on of both sides: every register 0 (RGtin = MAX), RGeps = eps.
-  void reset(const hls::Word<W>& eps) {
-    rtl_.reset(word_bits<W>(eps));
-    for (hls::PpState<W>& st : chain_) hls::pp_reset(st, eps);
+  // Power-on of both sides: every register 0 (RGtin = MAX), RGeps = eps, RGnear = tau_near.
+  void reset(const hls::Word<W>& eps, const hls::Word<W>& tau_near) {
+    rtl_.reset(rtl_word<W>(eps), rtl_word<W>(tau_near));
+    for (hls::PpState<W>& st : chain_) hls::pp_reset(st, eps, tau_near);
+    eps_ = eps;
+    tau_near_ = tau_near;
   }
+  // A configuration write between two frames, no reset: RGeps and RGnear of every PP on both
+  // sides, in place from the next frame's first cycle (the other registers keep their values).
+  void configure(const hls::Word<W>& eps, const hls::Word<W>& tau_near) {
+    rtl_.configure(rtl_word<W>(eps), rtl_word<W>(tau_near));
+    for (hls::PpState<W>& st : chain_) configure(st, eps, tau_near);
+    eps_ = eps;
+    tau_near_ = tau_near;
+  }
+  const hls::Word<W>& eps() const { return eps_; }
+  const hls::Word<W>& tau_near() const { return tau_near_; }
   int n_pp() const { return int(chain_.size()); }
 
   // One frame's stream (columns columns) through both, from where the last frame left them.
@@ -266,18 +307,33 @@ class IpCosim {
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
   }
-  // The model alone on a frame's stream from the chain's present state (both sides untouched).
+  // The model alone on a frame's stream from the chain's present state, RGeps and RGnear written
+  // as configure(eps, tau_near) would (both sides untouched).
+  std::int64_t model_cycles(const std::vector<invparam::StreamCode<W>>& stream, int columns,
+                            const invparam::ArrayPacing& pacing, const hls::Word<W>& eps,
+                            const hls::Word<W>& tau_near) const {
+    std::vector<hls::PpState<W>> chain = chain_;
+    for (hls::PpState<W>& st : chain) configure(st, eps, tau_near);
+    return invparam::run_array_frame(chain, stream, columns, pacing).clocks;
+  }
+  // The same with the present configuration.
   std::int64_t model_cycles(const std::vector<invparam::StreamCode<W>>& stream, int columns,
                             const invparam::ArrayPacing& pacing = {}) const {
-    std::vector<hls::PpState<W>> chain = chain_;
-    return invparam::run_array_frame(chain, stream, columns, pacing).clocks;
+    return model_cycles(stream, columns, pacing, eps_, tau_near_);
   }
   // The model's run of the last frame (its VT results per column and PP).
   const invparam::ArrayRun<W>& last_run() const { return run_; }
 
  private:
+  // The model's side of a configuration write (pp_reset loads the same two registers).
+  static void configure(hls::PpState<W>& st, const hls::Word<W>& eps, const hls::Word<W>& tau_near) {
+    st.RGeps = eps;
+    st.RGnear = tau_near;
+  }
+
   IpRtl& rtl_;
   std::vector<hls::PpState<W>> chain_;
+  hls::Word<W> eps_, tau_near_;
   invparam::ArrayRun<W> run_;
   int frames_ = 0;
 };

@@ -1,16 +1,19 @@
 // Co-simulation of the inverse-parameter array RTL (rtl/ip_array.sv) against the clock-level model
 // (ip_cosim.hpp): zero mismatches of any PP's output word, Ctrl lines and VT result, of the
 // handshake (held cycles) and of the frame's cycles, in every Verilated configuration (W, N_PP) =
-// (64, 8), (64, 64), (57, 16), on single objects (a box, a prism, faces grazed by a sample, an empty
-// frame, the eye inside an object), random scenes of random words and boxes, the polyhedra scene's
-// frames set up on an N_PP x N_PP lattice, frames back to back without reset, and random input gaps
-// and VT back-pressure. Each failure prints the first mismatch (frame, cycle, PP, signal, expected,
-// got). CIG_COSIM_TRACE_DIR=DIR writes every run's FST waveform to DIR.
+// (64, 8), (64, 64), (57, 16) (W the seed's word; the RTL's registers have W + 16 bits), on single
+// objects (a box, a prism, faces grazed by a sample, an empty frame, the eye inside an object, a
+// near plane through an object), random scenes of random words (up to the register's range) and
+// boxes, random RGnear, the polyhedra scene's frames set up on an N_PP x N_PP lattice, frames back
+// to back without reset (RGeps and RGnear rewritten between them), and random input gaps and VT
+// back-pressure. Each failure prints the first mismatch (frame, cycle, PP, signal, expected, got).
+// CIG_COSIM_TRACE_DIR=DIR writes every run's FST waveform to DIR.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -61,8 +64,9 @@ void expect_ok(const IpFrameResult& r, const std::string& what) {
   EXPECT_EQ(r.vt_results, r.samples) << what << ": one VT result per sample";
 }
 
-// Scenes through one configuration: a fresh reset per scene (its own RGeps). The samples that saw
-// an object, and the held cycles, summed over the scenes, must not be 0: the test tests something.
+// Scenes through one configuration: a fresh reset per scene (its own RGeps and RGnear). The samples
+// that saw an object, and the held cycles, summed over the scenes, must not be 0: the test tests
+// something.
 template <int W>
 void expect_scenes(const IpRtlConfig& cfg, const std::vector<InvparamScene<W>>& scenes, int columns,
                    const ArrayPacing& pacing = {}, StreamMode mode = StreamMode::kFull) {
@@ -71,7 +75,7 @@ void expect_scenes(const IpRtlConfig& cfg, const std::vector<InvparamScene<W>>& 
   ASSERT_TRUE(rtl != nullptr) << cfg.text();
   std::int64_t hits = 0, held = 0;
   for (std::size_t k = 0; k < scenes.size(); ++k) {
-    IpCosim<W> cosim(*rtl, scenes[k].eps);
+    IpCosim<W> cosim(*rtl, scenes[k].eps, scenes[k].tau_near);
     const IpFrameResult r =
         cosim.run_frame(invparam::build_frame_stream(scenes[k], columns, cfg.n_pp, mode), columns, pacing);
     expect_ok(r, cfg.text() + ", scene " + std::to_string(k));
@@ -132,13 +136,42 @@ EyePolyhedron prism_polyhedron(double cx, double cy, double r, double z0, double
   return p;
 }
 
+// near > 0: a near plane at that eye depth (RGnear = 1/near); 0: none (RGnear = MAX).
 template <int W>
-InvparamScene<W> geometric_scene(const std::vector<EyePolyhedron>& polyhedra, int n_pp) {
+InvparamScene<W> geometric_scene(const std::vector<EyePolyhedron>& polyhedra, int n_pp, double near = 0) {
   ScreenFrame f;
   f.raster = n_pp;
   f.tan_half_fov = 0.8;
+  f.near = near;
   f.polyhedra = polyhedra;
   return invparam::scene_of_setup(invparam_setup<W>(f, InvparamLattice{n_pp, 0}));
+}
+
+// A random RGnear: MAX (no near plane) one time in four, else a word of magnitude up to
+// 2^range_log2 (the random scenes' range: it cuts some objects and not others).
+template <int W>
+hls::Word<W> random_tau_near(std::mt19937_64& rng, int range_log2) {
+  if (uniform(rng, 0, 3) == 0) return hls::word_max<W>();
+  const std::int64_t r = std::int64_t(1) << std::min(range_log2, 62);
+  return hls::Word<W>(uniform(rng, -r / 4, r));
+}
+
+// The scene's words shifted left by `bits` (k doublings, wrapping to the register): magnitudes up
+// to 2^(range + bits), beyond the int64 range the generators draw from, so that sums reach the
+// register's top bits (the sign flag s of the 80- and 73-bit adder).
+template <int W>
+InvparamScene<W> shifted(InvparamScene<W> s, int bits) {
+  auto shift = [bits](hls::Word<W>& x) {
+    for (int k = 0; k < bits; ++k) x = hls::word_add(x, x);
+  };
+  for (hls::FaceSetup<W>& f : s.faces) {
+    shift(f.start);
+    shift(f.step_x);
+    shift(f.step_y);
+  }
+  shift(s.eps);
+  if (s.tau_near != hls::word_max<W>()) shift(s.tau_near);
+  return s;
 }
 
 // Word-level faces grazed by samples: tau exactly 0 on a column (an entry face) and on a row (an
@@ -176,14 +209,22 @@ InvparamScene<W> grazing_scene() {
   return s;
 }
 
+// The models' W is the register width of the seed's word the configuration names (hls word_bits).
 TEST(IpCosim, ConfigurationsHaveTheirParameters) {
   for (const IpRtlConfig& cfg : ip_rtl_configs()) {
     auto rtl = make_ip_rtl(cfg.w, cfg.n_pp);
     ASSERT_TRUE(rtl != nullptr) << cfg.text();
-    EXPECT_EQ(rtl->w(), cfg.w);
+    EXPECT_EQ(rtl->register_bits(), hls::word_bits(cfg.w)) << cfg.text();
+    EXPECT_EQ(rtl->register_bits(), cfg.register_bits()) << cfg.text();
     EXPECT_EQ(rtl->n_pp(), cfg.n_pp);
   }
+  EXPECT_EQ((IpRtlConfig{64, 8}.register_bits()), 80);
+  EXPECT_EQ((IpRtlConfig{57, 16}.register_bits()), 73);
   EXPECT_EQ(make_ip_rtl(64, 9), nullptr);
+  // A harness of another word than the model's registers refuses to run.
+  if (auto rtl = make_ip_rtl(64, 8)) {
+    EXPECT_THROW(IpCosim<57>(*rtl, hls::Word<57>(-1), hls::word_max<57>()), std::logic_error);
+  }
 }
 
 TEST(IpCosim, SingleObjects) {
@@ -199,6 +240,11 @@ TEST(IpCosim, SingleObjects) {
     EyePolyhedron cut = box_polyhedron(0, 0, 8, 4, 3, 1);
     cut.faces.push_back(plane(1, 0, 0, 0));  // x <= 0: a plane through the eye (Num = 0, az = 0)
     s.push_back(geometric_scene<W>({cut}, n_pp));
+    // A near plane at depth 9 through the first box (z 8.5..11.5) and in front of the prism (z 6..14):
+    // where the box's front face is nearer, it is cut away and its back faces do not show either.
+    s.push_back(
+        geometric_scene<W>({box_polyhedron(0.3, -0.2, 10, 3, 2, 1.5), box_polyhedron(-2, 1, 12, 1, 1, 1)}, n_pp, 9.0));
+    s.push_back(geometric_scene<W>({box_polyhedron(0.3, -0.2, 10, 3, 2, 1.5)}, n_pp, 1.0));  // near, cuts nothing
     InvparamScene<W> box;  // the unit tests' word-level box
     box.background = hls::ParCode(0xabcdef);
     box.eps = hls::Word<W>(-16);
@@ -212,17 +258,24 @@ TEST(IpCosim, SingleObjects) {
 TEST(IpCosim, RandomScenes) {
   for_each_config([](auto w, int n_pp, int& columns) {
     constexpr int W = decltype(w)::value;
-    std::mt19937_64 rng(std::uint64_t(100 + W + n_pp));
+    constexpr int kBits = hls::word_bits(W);  // the register
+    std::mt19937_64 rng(std::uint64_t(100 + W + n_pp)), near_rng(std::uint64_t(300 + W + n_pp));
     columns = 6;
     std::vector<InvparamScene<W>> s;
     for (int k = 0; k < 12; ++k) {
       const int range = std::vector<int>{6, 20, W - 4}[std::size_t(k % 3)];
       s.push_back(invparam::scenes::random_scene<W>(rng, int(uniform(rng, 0, 6)), 7, range));
+      // RGnear at random in the scene's range (or MAX) in every other scene: Obj clock 3's compare.
+      if (k % 2 == 1) s.back().tau_near = random_tau_near<W>(near_rng, range);
     }
     for (int k = 0; k < 4; ++k) s.push_back(invparam::scenes::box_scene<W>(rng, int(uniform(rng, 1, 5)), 6, n_pp));
-    // Words up to the word's range (W = 64: int64's, 2^62): the sign flag of sums >= 2^(W-2).
-    for (int k = 0; k < 4; ++k)
-      s.push_back(invparam::scenes::random_scene<W>(rng, int(uniform(rng, 1, 6)), 7, std::min(W - 1, 62)));
+    // Words up to the register's range (2^62 from the generator, shifted to 2^(kBits - 1)): the
+    // sign flag of sums >= 2^(kBits - 2), and wraps.
+    for (int k = 0; k < 6; ++k) {
+      InvparamScene<W> r = invparam::scenes::random_scene<W>(rng, int(uniform(rng, 1, 6)), 7, 62);
+      if (k % 2 == 1) r.tau_near = random_tau_near<W>(near_rng, 62);
+      s.push_back(shifted(r, k < 2 ? 0 : kBits - 1 - 62));
+    }
     return s;
   });
 }
@@ -254,20 +307,26 @@ TEST(IpCosim, RandomGapsAndBackPressure) {
   }
 }
 
-// Frames back to back through one chain and one RTL, no reset between them (the same RGeps):
-// random scenes, empty ones, paced and not.
+// Frames back to back through one chain and one RTL, no reset between them: random scenes, empty
+// ones, paced and not; RGeps and RGnear rewritten (IpCosim::configure) before every third frame.
 template <int W>
 void expect_consecutive(const IpRtlConfig& cfg, std::uint64_t seed) {
   if (configuration_missing(cfg)) return;
   auto rtl = rtl_for(cfg);
   ASSERT_TRUE(rtl != nullptr);
-  std::mt19937_64 rng(seed);
-  const hls::Word<W> eps(-100);
-  IpCosim<W> cosim(*rtl, eps);
+  std::mt19937_64 rng(seed), near_rng(seed + 1000);
+  hls::Word<W> eps(-100), tau_near = hls::word_max<W>();
+  IpCosim<W> cosim(*rtl, eps, tau_near);
   const int columns = 4;
   for (int frame = 0; frame < 10; ++frame) {
     InvparamScene<W> s = invparam::scenes::random_scene<W>(rng, frame % 4 == 1 ? 0 : int(uniform(rng, 1, 5)), 7, 20);
+    if (frame % 3 == 2) {
+      eps = hls::Word<W>(-uniform(near_rng, 1, 1 << 16));
+      tau_near = random_tau_near<W>(near_rng, 20);
+      cosim.configure(eps, tau_near);
+    }
     s.eps = eps;
+    s.tau_near = tau_near;
     const ArrayPacing pacing{std::uint32_t(frame + 3), frame % 2 ? 30 : 0, frame % 3 ? 35 : 0};
     const IpFrameResult r =
         cosim.run_frame(invparam::build_frame_stream(s, columns, cfg.n_pp, StreamMode::kFull), columns, pacing);

@@ -53,6 +53,35 @@ void set_port_field(VlWide<N>& v, int lo, int width, std::uint64_t x) {
   }
 }
 
+// Words of up to 128 bits (stage F's 73- and 80-bit registers), LSB first, in one integer: the
+// same calls for a port of up to 64 bits and for a VlWide one.
+__extension__ typedef unsigned __int128 PortWord;
+
+// `width` (<= 128) bits of a port from bit `lo`.
+template <class T>
+PortWord port_word(const T& v, int lo, int width) {
+  return port_field(v, lo, std::min(width, 64));  // a port of at most 64 bits
+}
+template <std::size_t N>
+PortWord port_word(const VlWide<N>& v, int lo, int width) {
+  if (width <= 64) return port_field(v, lo, width);
+  return PortWord(port_field(v, lo, 64)) | PortWord(port_field(v, lo + 64, width - 64)) << 64;
+}
+// A whole port of `width` bits from the low bits of x (the rest of x is ignored).
+template <class T>
+void set_port_word(T& v, int width, PortWord x) {
+  set_port_field(v, 0, std::min(width, 64), std::uint64_t(x));
+}
+template <std::size_t N>
+void set_port_word(VlWide<N>& v, int width, PortWord x) {
+  for (std::size_t k = 0; k < N; ++k) {
+    const int lo = int(k) * 32;
+    const std::uint32_t piece = lo < 128 ? std::uint32_t(x >> lo) : 0u;
+    const int keep = std::max(0, std::min(32, width - lo));
+    v[k] = keep >= 32 ? piece : piece & ((1u << keep) - 1u);
+  }
+}
+
 // A whole wide port from the first `width` bits of a record (the rest zero).
 template <std::size_t N>
 void set_port_bits(VlWide<N>& v, const Bits& b, int width) {

@@ -5,9 +5,9 @@
 // convex polyhedra set up as the invparam engine sets them up (invparam_setup<64>, on a small
 // lattice), the column values the host computes (invparam_first_column, invparam_next_column).
 // One frame also holds hand-made polyhedra for the kernel's awkward cases: a face through the eye
-// (Num = 0: az = 0, the Den rule against RGeps), a face 1 mm ahead (tau saturates the word in the
-// setup, and the running value wraps as the rows add step_y), a box around the eye (exit faces
-// only) and one behind it. The pixel processor replays windows of what one PP of the systolic array
+// (Num = 0: az = 0, the Den rule against RGeps), a face 1 mm ahead (tau up to ~1000, in the guard
+// bits' range), a face 0.05 um ahead (decided as through the eye), a box around the eye (exit faces
+// only) and one behind it; that frame has a near plane at 2 m (RGnear = 0.5). The pixel processor replays windows of what one PP of the systolic array
 // receives (cmodel/invparam/systolic_array.hpp: the frame's token stream, with the host's input gaps
 // and VT back-pressure), chosen so that the windows hold every token kind and every rule of the
 // PP's clock 4. The writers check that the vectors reach these cases.
@@ -61,6 +61,9 @@ std::vector<EyePolyhedron> awkward_polyhedra(double t) {
   EyePolyhedron slab = box(-0.5 * t, 0.5 * t, 0.5, 0.4 * t, 0.4 * t, 0.5);
   slab.faces[4] = plane(0.3, 0.2, -1, -0.001);  // tilted, 1 mm ahead
   out.push_back(slab);
+  EyePolyhedron sliver = box(0.5 * t, -0.5 * t, 4, 0.3 * t, 0.3 * t, 1);
+  sliver.faces[2] = plane(0.1, -1, 0.2, -5e-8);  // 0.05 um ahead: the Num = 0 path
+  out.push_back(sliver);
   out.push_back(box(0, 0, 0, 2, 2, 2));    // around the eye
   out.push_back(box(0, 0, -10, 3, 3, 1));  // behind the eye
   return out;
@@ -79,15 +82,16 @@ Frames polyhedra_frames(const std::string& scenes) {
   f.tele = pipeline.geometry(3, 1, report);
   f.awkward = f.near;
   for (EyePolyhedron& p : awkward_polyhedra(f.near.tan_half_fov)) f.awkward.polyhedra.push_back(std::move(p));
+  f.awkward.near = 2;
   return f;
 }
 
 // ---- invparam_column_top -------------------------------------------------------------------------
 struct ColumnCoverage {
-  int hits = 0, misses = 0, az0_faces = 0, saturated = 0, out_of_range = 0, partial = 0, empty = 0;
+  int hits = 0, misses = 0, az0_faces = 0, through_eye = 0, near_plane = 0, partial = 0, empty = 0;
   void require() const {
-    if (hits == 0 || misses == 0 || az0_faces == 0 || saturated == 0 || out_of_range == 0 || partial == 0 || empty == 0)
-      throw std::runtime_error("invparam_column_top vectors: a case is missing (hit, miss, az = 0, saturation, ...)");
+    if (hits == 0 || misses == 0 || az0_faces == 0 || through_eye == 0 || near_plane == 0 || partial == 0 || empty == 0)
+      throw std::runtime_error("invparam_column_top vectors: a case is missing (hit, miss, az = 0, through eye, ...)");
   }
 };
 
@@ -99,9 +103,12 @@ void add_columns(VectorFile<InvparamColumnTopCase>& file, const ScreenFrame& fra
   auto in = std::make_unique<InvparamColumnTopCase::Input>();
   in->faces = *setup.faces;
   in->eps = setup.eps;
+  in->tau_near = setup.tau_near;
   in->rows = rows > 0 ? rows : setup.size;
-  coverage.saturated += setup.saturated;
-  coverage.out_of_range += setup.out_of_range;
+  if (setup.saturated != 0 || setup.out_of_range != 0)
+    throw std::runtime_error("invparam_column_top vectors: a setup value left the word");
+  coverage.through_eye += setup.through_eye;
+  coverage.near_plane += frame.near > 0 ? 1 : 0;
   coverage.partial += in->rows < setup.size ? 1 : 0;
   coverage.empty += setup.faces->objects == 0 ? 1 : 0;
   for (int f = 0; f < int(setup.origin.size()); ++f) coverage.az0_faces += setup.faces->face[f].az ? 0 : 1;
@@ -205,9 +212,10 @@ unsigned pp_events(const hls::PpState<W>& b, const PpInput& in, const hls::PpOut
 
 // Windows of kCalls clocks over one PP's inputs (from power-on), each taken when it holds an event
 // no window before it held; returns the events covered.
-unsigned add_windows(VectorFile<PpCase>& file, const std::vector<PpInput>& inputs, const Word& eps) {
+unsigned add_windows(VectorFile<PpCase>& file, const std::vector<PpInput>& inputs, const Word& eps,
+                     const Word& tau_near) {
   hls::PpState<W> st;
-  hls::pp_reset(st, eps);
+  hls::pp_reset(st, eps, tau_near);
   auto in = std::make_unique<PpCase::Input>();
   unsigned covered = 0;
   for (std::size_t first = 0; first < inputs.size(); first += PpCase::kCalls) {
@@ -244,9 +252,9 @@ void write_pixel_processor(const std::string& dir, const Frames& f) {
   unsigned covered = 0;
   for (int pp : {8, n - 1}) {
     std::vector<PpInput> inputs;
-    invparam::run_array_stream<W>(stream, setup.eps, n, n, invparam::ArrayPacing{29, 20, 20},
+    invparam::run_array_stream<W>(stream, setup.eps, setup.tau_near, n, n, invparam::ArrayPacing{29, 20, 20},
                                   InputRecorder{pp - 1, &inputs});
-    covered |= add_windows(file, inputs, setup.eps);
+    covered |= add_windows(file, inputs, setup.eps, setup.tau_near);
   }
   if (covered != kAllEvents)
     throw std::runtime_error("invparam_pixel_processor_top vectors: events missing (mask " +

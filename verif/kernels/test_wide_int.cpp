@@ -5,6 +5,7 @@
 // two builds bit for bit.
 #include <cstdint>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -60,23 +61,21 @@ std::vector<i128> test_values(std::mt19937_64& rng) {
 template <int W>
 void check_width(std::mt19937_64& rng, kernel_test::Digest& digest) {
   SCOPED_TRACE(W);
-  EXPECT_EQ(val(Word<W>::max_code()), hi_of(W));
-  EXPECT_EQ(val(Word<W>::min_code()), lo_of(W));
-  EXPECT_EQ(val(word_max<W>()), hi_of(W));
-  EXPECT_EQ(val(word_min<W>()), lo_of(W));
+  EXPECT_EQ(val(WideInt<W>::max_code()), hi_of(W));
+  EXPECT_EQ(val(WideInt<W>::min_code()), lo_of(W));
   const std::vector<i128> values = test_values<W>(rng);
   for (const i128 x : values) {
-    const Word<W> a =
-        Word<W>::from_limbs(static_cast<std::uint64_t>(static_cast<u128>(x) >> 64), static_cast<std::uint64_t>(x));
+    const WideInt<W> a =
+        WideInt<W>::from_limbs(static_cast<std::uint64_t>(static_cast<u128>(x) >> 64), static_cast<std::uint64_t>(x));
     ASSERT_EQ(val(a), x);
-    if (x >= INT64_MIN && x <= INT64_MAX) { ASSERT_EQ(val(Word<W>(static_cast<std::int64_t>(x))), x); }
+    if (x >= INT64_MIN && x <= INT64_MAX) { ASSERT_EQ(val(WideInt<W>(static_cast<std::int64_t>(x))), x); }
     ASSERT_EQ(word_negative(a), x < 0);
     ASSERT_EQ(word_nonzero(a), x != 0);
     for (int k = 0; k < 8; ++k) {
       const i128 y = values[rng() % values.size()];
-      const Word<W> b =
-          Word<W>::from_limbs(static_cast<std::uint64_t>(static_cast<u128>(y) >> 64), static_cast<std::uint64_t>(y));
-      const Word<W> s = word_add(a, b);
+      const WideInt<W> b =
+          WideInt<W>::from_limbs(static_cast<std::uint64_t>(static_cast<u128>(y) >> 64), static_cast<std::uint64_t>(y));
+      const WideInt<W> s = word_add(a, b);
       ASSERT_TRUE(is_wrap_of(val(s), static_cast<u128>(x) + static_cast<u128>(y), W));
       ASSERT_EQ(word_greater(a, b), x > y);
       ASSERT_EQ(a == b, x == y);
@@ -87,10 +86,10 @@ void check_width(std::mt19937_64& rng, kernel_test::Digest& digest) {
   }
   // Construction from an int64 wraps to W bits.
   for (const std::int64_t x : {INT64_MIN, INT64_MAX, std::int64_t{-5}, std::int64_t{1} << 40}) {
-    ASSERT_TRUE(is_wrap_of(val(Word<W>(x)), static_cast<u128>(static_cast<i128>(x)), W));
+    ASSERT_TRUE(is_wrap_of(val(WideInt<W>(x)), static_cast<u128>(static_cast<i128>(x)), W));
   }
   // An unsigned 64-bit value is not negative.
-  ASSERT_TRUE(is_wrap_of(val(Word<W>(~std::uint64_t{0})), static_cast<u128>(~std::uint64_t{0}), W));
+  ASSERT_TRUE(is_wrap_of(val(WideInt<W>(~std::uint64_t{0})), static_cast<u128>(~std::uint64_t{0}), W));
 }
 
 TEST(WideInt, AgainstInt128) {
@@ -115,7 +114,10 @@ TEST(WideInt, WrapAtTheEnds) {
   EXPECT_EQ(word_add(word_max<72>(), Word<72>(1)), word_min<72>());
   EXPECT_EQ(word_add(word_min<40>(), Word<40>(-1)), word_max<40>());
   EXPECT_TRUE(word_greater(word_max<64>(), word_min<64>()));
-  EXPECT_EQ(Word<64>(-7).value(), -7);
+  EXPECT_TRUE(word_negative(Word<64>(-7)) && word_nonzero(Word<64>(-7)));
+  // The PP's register: the seed's W plus the guard bits (word.hpp).
+  static_assert(std::is_same<Word<64>, WideInt<80>>::value && std::is_same<Word<57>, WideInt<73>>::value, "");
+  EXPECT_EQ(word_add(word_max<57>(), Word<57>(1)), word_min<57>());
 }
 
 TEST(WideInt, WideIntDigest) {

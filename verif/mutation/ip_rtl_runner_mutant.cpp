@@ -1,7 +1,7 @@
 // The runner of the mutation test's Verilated stage F arrays (CMakeLists.txt here,
 // build_models.sh): the co-simulation's IpRtlImpl (ip_rtl_runner_impl.hpp) over the configurations
 // of the mutated copy of rtl/ip_*.sv that this build has, (W, N_PP) = (64, 8), (57, 16) and / or
-// (64, 64), without FST tracing. A configuration the mutant does not name is absent:
+// (64, 64) (W the seed's word; the models' W is the register width W + 16), without FST tracing. A configuration the mutant does not name is absent:
 // ip_rtl_configs() leaves it out, make_ip_rtl gives nullptr and test_ip_cosim.cpp skips it
 // (CIG_COSIM_SOME_CONFIGS).
 

@@ -85,9 +85,9 @@ void expect_reference(const InvparamScene<W>& s, const ArrayRun<W>& run, int col
     for (int j = 0; j < n_pp; ++j) {
       const VtResult<W> ref = reference_sample(s, i, j);
       const VtResult<W>& got = run.at(i, j, n_pp);
-      if ((got.par.value() != ref.par.value() || got.obj.value() != ref.obj.value()) && ++bad <= 3)
+      if ((got.par.value() != ref.par.value() || got.obj.low_limb() != ref.obj.low_limb()) && ++bad <= 3)
         ADD_FAILURE() << what << ": column " << i << " row " << j << ": array (" << got.par.value() << ", "
-                      << got.obj.value() << "), Fig. 1 (" << ref.par.value() << ", " << ref.obj.value() << ")";
+                      << got.obj.low_limb() << "), Fig. 1 (" << ref.par.value() << ", " << ref.obj.low_limb() << ")";
     }
   EXPECT_EQ(bad, 0) << what;
 }
@@ -97,7 +97,7 @@ void expect_same_results(const ArrayRun<W>& a, const ArrayRun<W>& b, const char*
   ASSERT_EQ(a.results.size(), b.results.size());
   for (std::size_t k = 0; k < a.results.size(); ++k)
     ASSERT_TRUE(a.results[k].par.value() == b.results[k].par.value() &&
-                a.results[k].obj.value() == b.results[k].obj.value())
+                a.results[k].obj.low_limb() == b.results[k].obj.low_limb())
         << what << ": result " << k;
 }
 
@@ -108,11 +108,15 @@ TEST(InvparamTokens, FieldsRoundTrip) {
   for (unsigned c = 0; c < 32; ++c) {
     EXPECT_EQ(word_command<63>(command_word<63>(Command(c))).value(), c);
     EXPECT_EQ(word_command<40>(command_word<40>(Command(c))).value(), c);
-    EXPECT_EQ(command_word<63>(Command(c)).value(), Word<63>(std::int64_t(c) << 58).value());
+    // The command in the register's top 5 bits (word_bits(63) = 79: bits 78..74, the high limb's 14..10;
+    // the limb above bit 78 is the sign's extension).
+    EXPECT_EQ(command_word<63>(Command(c)).high_limb() & 0x7fffu, std::uint64_t(c)
+                                                                      << (cig::hls::word_bits(63) - 64 - 5));
+    EXPECT_EQ(command_word<63>(Command(c)).low_limb(), 0u);
   }
   for (unsigned p : {0u, 1u, 0x800000u, 0xffffffu, 0x123456u}) {
     EXPECT_EQ(word_par<63>(par_word<63>(ParCode(p))).value(), p);
-    EXPECT_EQ(par_word<63>(ParCode(p)).value(), std::int64_t(p));
+    EXPECT_EQ(par_word<63>(ParCode(p)).low_limb(), std::uint64_t(p));
     EXPECT_EQ(word_par<57>(Word<57>(std::int64_t(p) - (std::int64_t(1) << 40))).value(), p);  // low bits only
   }
   EXPECT_EQ(command_kind(pln_command(true, false)), kKindPln);
@@ -126,7 +130,7 @@ TEST(InvparamPixelProcessor, TopPassesTokensOneClockLater) {
   using namespace cig::hls;
   constexpr int W = kPpTopWordBits;
   PpState<W> st;
-  pp_reset(st, Word<W>(-4));
+  pp_reset(st, Word<W>(-4), word_max<W>());
   const Word<W> zero = word_zero<W>();
   const Word<W> codes[] = {command_word<W>(pln_command(true, false)),
                            Word<W>(5),
@@ -145,13 +149,13 @@ TEST(InvparamPixelProcessor, TopPassesTokensOneClockLater) {
   for (int t = 0; t < 13; ++t) {
     const Word<W> in = t < 12 ? codes[t] : zero;
     const PpOutputs<W> o = invparam_pixel_processor_top(st, in, PpCtrl{t % 4 == 0});
-    EXPECT_EQ(o.output.value(), t == 3 ? 105 : previous.value()) << "clock " << t;
+    EXPECT_EQ(o.output.low_limb(), t == 3 ? 105 : previous.low_limb()) << "clock " << t;
     EXPECT_EQ(o.ctrl.start, t > 0 && (t - 1) % 4 == 0) << "clock " << t;
     if (o.vt.valid) {
       ++vt;
       EXPECT_EQ(t, 9);
       EXPECT_EQ(o.vt.par.value(), 0x42u);  // the face seen at tau = 105
-      EXPECT_EQ(o.vt.obj.value(), 105);
+      EXPECT_EQ(o.vt.obj.low_limb(), 105);
     }
     previous = in;
   }
@@ -196,13 +200,13 @@ TEST(InvparamArray, PaddingKeepsVtBusFree) {
   const int n_pp = 16, columns = 3;
   const std::vector<StreamCode<63>> stream = build_frame_stream(s, columns, n_pp, StreamMode::kFull);
   ASSERT_EQ(std::int64_t(stream.size()), seed_frame_clocks(1, 1, n_pp, columns));
-  EXPECT_EQ(run_array_stream(stream, s.eps, columns, n_pp).vt_conflicts, 0);
+  EXPECT_EQ(run_array_stream(stream, s.eps, s.tau_near, columns, n_pp).vt_conflicts, 0);
   std::vector<StreamCode<63>> unpadded;  // keep the last column's N_n - 1 pushing codes
   const std::size_t tail = stream.size() - std::size_t(n_pp - 1);
   for (std::size_t k = 0; k < stream.size(); ++k)
-    if (k >= tail || !stream[k].start || stream[k].word.value() != 0) unpadded.push_back(stream[k]);
+    if (k >= tail || !stream[k].start || word_nonzero(stream[k].word)) unpadded.push_back(stream[k]);
   ASSERT_LT(unpadded.size(), stream.size());
-  const ArrayRun<63> run = run_array_stream(unpadded, s.eps, columns, n_pp);
+  const ArrayRun<63> run = run_array_stream(unpadded, s.eps, s.tau_near, columns, n_pp);
   EXPECT_GT(run.vt_conflicts, 0);
 }
 
@@ -216,7 +220,7 @@ void check_random_results(std::uint64_t seed, int trials) {
     const int n_pp = int(uniform(rng, 1, 20)), columns = int(uniform(rng, 1, 8));
     const ArrayRun<W> run = run_systolic_array(s, columns, n_pp);
     expect_reference(s, run, columns, n_pp, "random words");
-    for (const VtResult<W>& r : run.results) hits += r.obj.value() != 0;
+    for (const VtResult<W>& r : run.results) hits += word_nonzero(r.obj) ? 1 : 0;
     samples += std::int64_t(run.results.size());
   }
   EXPECT_GT(hits, samples / 50) << "too few samples hit an object to test anything";
@@ -249,14 +253,15 @@ TEST(InvparamArray, BubblesAndBackPressureOnlyAddClocks) {
     const InvparamScene<63> s = random_scene<63>(rng, int(uniform(rng, 0, 5)), 7, 20);
     const int n_pp = int(uniform(rng, 1, 20)), columns = int(uniform(rng, 1, 8));
     const std::vector<StreamCode<63>> stream = build_frame_stream(s, columns, n_pp, StreamMode::kFull);
-    const ArrayRun<63> plain = run_array_stream(stream, s.eps, columns, n_pp);
+    const ArrayRun<63> plain = run_array_stream(stream, s.eps, s.tau_near, columns, n_pp);
     const ArrayPacing pacing{std::uint32_t(trial + 1), int(uniform(rng, 0, 60)), int(uniform(rng, 0, 60))};
     PacingCounter count;
-    const ArrayRun<63> paced = run_array_stream(stream, s.eps, columns, n_pp, pacing, count);
+    const ArrayRun<63> paced = run_array_stream(stream, s.eps, s.tau_near, columns, n_pp, pacing, count);
     ASSERT_EQ(paced.results.size(), plain.results.size());
     for (std::size_t r = 0; r < plain.results.size(); ++r) {
       EXPECT_EQ(paced.results[r].par.value(), plain.results[r].par.value()) << "trial " << trial << " result " << r;
-      EXPECT_EQ(paced.results[r].obj.value(), plain.results[r].obj.value()) << "trial " << trial << " result " << r;
+      EXPECT_EQ(paced.results[r].obj.low_limb(), plain.results[r].obj.low_limb())
+          << "trial " << trial << " result " << r;
     }
     EXPECT_EQ(paced.vt_conflicts, 0);
     EXPECT_EQ(paced.clocks, count.clocks + count.freezes);
@@ -280,15 +285,16 @@ TEST(InvparamArray, ConsecutiveFramesNeedNoReset) {
   for (int frame = 0; frame < 12; ++frame) {
     const InvparamScene<63> s = random_scene<63>(rng, frame % 4 == 0 ? 0 : int(uniform(rng, 1, 5)), 7, 20);
     if (frame == 0)
-      for (PpState<63>& st : chain) cig::hls::pp_reset(st, s.eps);
+      for (PpState<63>& st : chain) cig::hls::pp_reset(st, s.eps, s.tau_near);
     const std::vector<StreamCode<63>> stream = build_frame_stream(s, columns, n_pp, StreamMode::kFull);
     const ArrayPacing pacing{std::uint32_t(frame + 3), frame % 2 ? 30 : 0, frame % 3 ? 30 : 0};
-    const ArrayRun<63> fresh = run_array_stream(stream, s.eps, columns, n_pp, pacing);
+    const ArrayRun<63> fresh = run_array_stream(stream, s.eps, s.tau_near, columns, n_pp, pacing);
     const ArrayRun<63> kept = run_array_frame(chain, stream, columns, pacing);
     EXPECT_EQ(kept.clocks, fresh.clocks) << "frame " << frame;
     for (std::size_t r = 0; r < fresh.results.size(); ++r) {
       EXPECT_EQ(kept.results[r].par.value(), fresh.results[r].par.value()) << "frame " << frame << " result " << r;
-      EXPECT_EQ(kept.results[r].obj.value(), fresh.results[r].obj.value()) << "frame " << frame << " result " << r;
+      EXPECT_EQ(kept.results[r].obj.low_limb(), fresh.results[r].obj.low_limb())
+          << "frame " << frame << " result " << r;
     }
   }
 }

@@ -20,7 +20,8 @@ struct Fields<hls::PpState<W>> {
   template <class V, class R>
   static void visit(V& v, R& r) {
     v(r.RGres, "RGres"), v(r.RGh, "RGh"), v(r.RGtin, "RGtin"), v(r.RGtout, "RGtout"), v(r.RGobj, "RGobj");
-    v(r.RGeps, "RGeps"), v(r.RGpar, "RGpar"), v(r.RGparP, "RGparP"), v(r.RGI, "RGI"), v(r.Tz, "Tz");
+    v(r.RGeps, "RGeps"), v(r.RGnear, "RGnear"), v(r.RGpar, "RGpar"), v(r.RGparP, "RGparP"), v(r.RGI, "RGI"),
+        v(r.Tz, "Tz");
     v(r.Ts, "Ts"), v(r.Tc, "Tc"), v(r.Tctrl, "Tctrl"), v(r.Tvalid, "Tvalid"), v(r.clock, "clock");
   }
 };
