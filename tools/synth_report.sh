@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Synthesis report of the quadtree RTL (rtl/) with Debian's yosys 0.23: per module the cell count,
-# the transistor estimate of `stat -tech cmos` and the longest combinational path in cells
-# (`ltp -noff` on the module flattened), for
+# Synthesis report of the RTL (rtl/quadtree/, rtl/invparam/) with Debian's yosys 0.23: per module
+# the cell count, the transistor estimate of `stat -tech cmos` and the longest combinational path
+# in cells (`ltp -noff` on the module flattened), for
 #   pe_mid     qt_pe alone at a middle level (N_LOG2 = 9, LEVEL = 5), default widths;
 #   pe_pixel   qt_pe alone at the pixel level (N_LOG2 = 9, LEVEL = 9), default widths;
 #   raster     a whole architecture, small: qt_raster N_LOG2 = 4, TREE_LEVELS = 2 (2p2t: 7 PEs,
@@ -43,17 +43,17 @@ designs=("$@")
 [ ${#designs[@]} -gt 0 ] || designs=(pe_mid pe_pixel raster ip_pe_57 ip_pe_64 ip_array_16)
 command -v yosys >/dev/null || { echo "synth_report: yosys not found (tools/deps.sh installs it)" >&2; exit 2; }
 
-# The RTL sources in compile order (the package first): the lists rtl/qt_sources.cmake and
-# rtl/ip_sources.cmake keep for every consumer, one file name per line between
+# The RTL sources in compile order (the package first): the lists rtl/quadtree/qt_sources.cmake and
+# rtl/invparam/ip_sources.cmake keep for every consumer, one file name per line between
 # `set(<LIST>_NAMES` and `)`.
-list_sources() {  # list_sources <cmake file> <list name> <file prefix>
+list_sources() {  # list_sources <folder of rtl/> <cmake file> <list name> <file prefix>
   local s
-  s=$(sed -n "/^set($2/,/^)/s|^ *\($3_[a-z0-9_]*\.sv\)\$|$root/rtl/\1|p" "$root/rtl/$1")
-  [ -n "$s" ] || { echo "synth_report: no sources in $root/rtl/$1" >&2; exit 2; }
+  s=$(sed -n "/^set($3/,/^)/s|^ *\($4_[a-z0-9_]*\.sv\)\$|$root/rtl/$1/\1|p" "$root/rtl/$1/$2")
+  [ -n "$s" ] || { echo "synth_report: no sources in $root/rtl/$1/$2" >&2; exit 2; }
   echo $s
 }
-qt_sources=$(list_sources qt_sources.cmake CIG_RTL_SV_NAMES qt)
-ip_sources=$(list_sources ip_sources.cmake CIG_IP_RTL_SV_NAMES ip)
+qt_sources=$(list_sources quadtree qt_sources.cmake CIG_RTL_SV_NAMES qt)
+ip_sources=$(list_sources invparam ip_sources.cmake CIG_IP_RTL_SV_NAMES ip)
 
 # top and -chparam arguments of a design.
 design_args() {

@@ -1,5 +1,5 @@
-// Google Benchmark of the Verilated quadtree RTL (rtl/qt_raster.sv) alone, without the model:
-// simulated cycles per second and polygons per second of wall time, for
+// Google Benchmark of the Verilated quadtree RTL (rtl/quadtree/qt_raster.sv) alone, without the
+// model: simulated cycles per second and polygons per second of wall time, for
 //   * random/6p, random/4p2t: 150 random polygons on a 64-line raster (test_cosim's kind);
 //   * overlap/6p: scenes/small/overlap.polys.json;
 //   * airfield/9p, airfield/7p2t: the centre channel of frame 0 of scenes/airfield.json;
@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "bench/bench_inputs.hpp"
-#include "cosim.hpp"
-#include "ip_cosim.hpp"
+#include "invparam/ip_cosim.hpp"
+#include "quadtree/cosim.hpp"
 
 namespace {
 

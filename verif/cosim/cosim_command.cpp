@@ -16,10 +16,10 @@
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
-#include "cosim.hpp"
 #include "cosim_command.hpp"
 #include "cosim_trace.hpp"
 #include "hls/formatter/sample_lattice.hpp"
+#include "quadtree/cosim.hpp"
 #include "quadtree/quadtree_engine.hpp"
 
 namespace cig::cli {

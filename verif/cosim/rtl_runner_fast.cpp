@@ -1,8 +1,8 @@
 // The benchmark's Verilated configurations (bench_rtl): the co-simulation's RTL and wrapper
 // Verilated for speed (verif/cosim/CMakeLists.txt, cig_rtl_bench_models: no tracing, no
-// assertions, the generated code at -O2), behind the same runners (rtl_runner_impl.hpp,
-// ip_rtl_runner_impl.hpp): the quadtree's 9p and 7p2t, the inverse-parameter array for the seed's
-// 64-bit word (80-bit registers), N_PP = 64.
+// assertions, the generated code at -O2), behind the same runners (quadtree/rtl_runner_impl.hpp,
+// invparam/ip_rtl_runner_impl.hpp): the quadtree's 9p and 7p2t, the inverse-parameter array for
+// the seed's 64-bit word (80-bit registers), N_PP = 64.
 
 // Verilator's headers and the generated ones are not ours to keep -Wextra-clean.
 #pragma GCC diagnostic push
@@ -13,8 +13,8 @@
 #include "Vqt_raster_fast_n9_t1_qt_raster_cosim_tb.h"
 #include "Vqt_raster_fast_n9_t2.h"
 #include "Vqt_raster_fast_n9_t2_qt_raster_cosim_tb.h"
-#include "ip_rtl_runner_impl.hpp"
-#include "rtl_runner_impl.hpp"
+#include "invparam/ip_rtl_runner_impl.hpp"
+#include "quadtree/rtl_runner_impl.hpp"
 #pragma GCC diagnostic pop
 
 namespace cig::cosim {

@@ -113,12 +113,12 @@ def self_test():
     planted = {
         "cmodel/quadtree/bad.hpp": '#include "hls/segment/x.hpp"\n',   # engine -> other engine
         "cmodel/engine/bad.hpp": '#include "reference/r.hpp"\n',       # interface -> reference
-        "cmodel/cli/bad.cpp": '#include "cosim.hpp"\n',                # product -> verif
+        "cmodel/cli/bad.cpp": '#include "quadtree/cosim.hpp"\n',       # product -> verif
         "hls/quadtree/bad.hpp": '#include "hls/segment/x.hpp"\n',
         "hls/formatter/bad.hpp": '#include "hls/segment/x.hpp"\n',     # ground -> stage D
     }
     with tempfile.TemporaryDirectory() as root:
-        for rel in ["hls/segment/x.hpp", "cmodel/reference/r.hpp", "verif/cosim/cosim.hpp"] + list(planted):
+        for rel in ["hls/segment/x.hpp", "cmodel/reference/r.hpp", "verif/cosim/quadtree/cosim.hpp"] + list(planted):
             os.makedirs(os.path.join(root, os.path.dirname(rel)), exist_ok=True)
             with open(os.path.join(root, rel), "w") as f:
                 f.write(planted.get(rel, ""))

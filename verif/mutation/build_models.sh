@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Verilates the mutated RTL copy for mutation testing (CMakeLists.txt here, custom command):
 #   build_models.sh VERILATOR MUTANT_DIR COSIM_TB OUT_DIR PREFIX P1 P2 [P1_ADD]
-# MUTANT_DIR holds rtl/ (the copy), sources.txt (rtl/qt_sources.cmake's or rtl/ip_sources.cmake's
-# order) and configs (the configurations to build, "A_B ...": the values of the cosim wrapper's
-# parameters P1 and P2, e.g. N_LOG2 TREE_LEVELS "6_1 6_2" or W N_PP "64_8 57_16"; P1 gets A + P1_ADD,
-# default 0: stage F's configurations name the seed's word, its RTL's W is the register width, the
-# word + 16 guard bits). Each
-# configuration gets the co-simulation's Verilator options and prefix (PREFIX, a printf format of
-# A, then B: Vqt_raster_n%s_t gives Vqt_raster_n6_t1, what the mutant runners include; the top module is
-# COSIM_TB's name) without FST tracing; the generated C++ is compiled at -O0 by Verilator's own make
-# (these models run the small N = 64 tests once: build time is what counts). A configuration not
-# asked for is removed, so that rtl_runner_mutant.cpp (__has_include) cannot pick up a stale one.
+# MUTANT_DIR holds rtl/ (the copy of rtl/quadtree/ or rtl/invparam/), sources.txt
+# (rtl/quadtree/qt_sources.cmake's or rtl/invparam/ip_sources.cmake's order) and configs (the
+# configurations to build, "A_B ...": the values of the cosim wrapper's parameters P1 and P2, e.g.
+# N_LOG2 TREE_LEVELS "6_1 6_2" or W N_PP "64_8 57_16"; P1 gets A + P1_ADD, default 0: stage F's
+# configurations name the seed's word, its RTL's W is the register width, the word + 16 guard
+# bits). Each configuration gets the co-simulation's Verilator options and prefix (PREFIX, a
+# printf format of A, then B: Vqt_raster_n%s_t gives Vqt_raster_n6_t1, what the mutant runners
+# include; the top module is COSIM_TB's name) without FST tracing; the generated C++ is compiled at
+# -O0 by Verilator's own make (these models run the small N = 64 tests once: build time is what
+# counts). A configuration not asked for is removed, so that rtl_runner_mutant.cpp (__has_include)
+# cannot pick up a stale one.
 # Output: OUT_DIR/libcig_rtl_mutant_models.a (every configuration's classes) and OUT_DIR/stamp.
 set -euo pipefail
 verilator=$1 mut=$2 tb=$3 out=$4 prefix_head=$5 p1=$6 p2=$7 p1_add=${8:-0}

@@ -1,7 +1,8 @@
 // The runner of the mutation test's Verilated stage F arrays (CMakeLists.txt here,
-// build_models.sh): the co-simulation's IpRtlImpl (ip_rtl_runner_impl.hpp) over the configurations
-// of the mutated copy of rtl/ip_*.sv that this build has, (W, N_PP) = (64, 8), (57, 16) and / or
-// (64, 64) (W the seed's word; the models' W is the register width W + 16), without FST tracing. A configuration the mutant does not name is absent:
+// build_models.sh): the co-simulation's IpRtlImpl (verif/cosim/invparam/ip_rtl_runner_impl.hpp)
+// over the configurations of the mutated copy of rtl/invparam/ip_*.sv that this build has,
+// (W, N_PP) = (64, 8), (57, 16) and / or (64, 64) (W the seed's word; the models' W is the
+// register width W + 16), without FST tracing. A configuration the mutant does not name is absent:
 // ip_rtl_configs() leaves it out, make_ip_rtl gives nullptr and test_ip_cosim.cpp skips it
 // (CIG_COSIM_SOME_CONFIGS).
 
@@ -23,7 +24,7 @@
 #include "Vip_array_w64_n64_ip_array_cosim_tb.h"
 #define CIG_MUTANT_W64N64 1
 #endif
-#include "ip_rtl_runner_impl.hpp"
+#include "invparam/ip_rtl_runner_impl.hpp"
 #pragma GCC diagnostic pop
 
 namespace cig::cosim {

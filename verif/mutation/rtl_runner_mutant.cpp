@@ -1,7 +1,8 @@
 // The runner of the mutation test's Verilated models (CMakeLists.txt here, build_models.sh): the
-// co-simulation's runner (rtl_runner_impl.hpp) over the configurations of the mutated RTL copy
-// that this build has, 6p and / or 4p2t (N = 64), without FST tracing. A configuration the mutant
-// does not name is absent: rtl_configs() leaves it out and make_rtl_runner gives nullptr.
+// co-simulation's runner (verif/cosim/quadtree/rtl_runner_impl.hpp) over the configurations of the
+// mutated RTL copy that this build has, 6p and / or 4p2t (N = 64), without FST tracing. A
+// configuration the mutant does not name is absent: rtl_configs() leaves it out and
+// make_rtl_runner gives nullptr.
 
 // Verilator's headers and the generated ones are not ours to keep -Wextra-clean.
 #pragma GCC diagnostic push
@@ -16,7 +17,7 @@
 #include "Vqt_raster_n6_t2_qt_raster_cosim_tb.h"
 #define CIG_MUTANT_4P2T 1
 #endif
-#include "rtl_runner_impl.hpp"
+#include "quadtree/rtl_runner_impl.hpp"
 #pragma GCC diagnostic pop
 
 namespace cig::cosim {

@@ -1,10 +1,12 @@
-# A top's filelist for other simulators (rtl/TOP.f) against the CMake source list it mirrors:
-#   cmake -DVERILATOR=<verilator> -DRTL=<repo>/rtl -DTOP=<module> -DNAMES=<file;file;...> -P <this>
+# A top's filelist for other simulators (rtl/<processor>/TOP.f) against the CMake source list it
+# mirrors:
+#   cmake -DVERILATOR=<verilator> -DRTL=<repo>/rtl/<processor> -DTOP=<module> -DNAMES=<file;...> -P <this>
 #   1. the list's entries (lines without their // comments, blank lines dropped) are NAMES, in
-#      order: rtl/qt_sources.cmake's or rtl/ip_sources.cmake's, so the two cannot drift apart;
-#   2. `verilator --lint-only -Wall -f TOP.f --top-module TOP` from rtl/ (the list's paths are
-#      relative to it) and `-F <repo>/rtl/TOP.f` from elsewhere (Verilator's relative-to-the-list
-#      form) pass with no message.
+#      order: rtl/quadtree/qt_sources.cmake's or rtl/invparam/ip_sources.cmake's, so the two cannot
+#      drift apart;
+#   2. `verilator --lint-only -Wall -f TOP.f --top-module TOP` from RTL (the list's paths are
+#      relative to it) and `-F RTL/TOP.f` from elsewhere (Verilator's relative-to-the-list form)
+#      pass with no message.
 cmake_minimum_required(VERSION 3.25)
 set(list_file ${RTL}/${TOP}.f)
 if(NOT EXISTS ${list_file})

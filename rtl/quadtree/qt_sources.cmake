@@ -18,11 +18,11 @@ list(TRANSFORM CIG_RTL_SV_NAMES PREPEND ${CMAKE_CURRENT_LIST_DIR}/ OUTPUT_VARIAB
 
 # A file in rtl/ missing from both lists (this one and stage F's, ip_sources.cmake) would silently
 # drop out of lint, synthesis and the models.
-include(${CMAKE_CURRENT_LIST_DIR}/ip_sources.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/../invparam/ip_sources.cmake)
 file(GLOB cig_rtl_sv_present CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/*.sv)
 foreach(file IN LISTS cig_rtl_sv_present)
   if(NOT file IN_LIST CIG_RTL_SV AND NOT file IN_LIST CIG_IP_RTL_SV)
     message(FATAL_ERROR "${file} is not listed in ${CMAKE_CURRENT_LIST_FILE} (CIG_RTL_SV_NAMES) "
-                        "or ${CMAKE_CURRENT_LIST_DIR}/ip_sources.cmake (CIG_IP_RTL_SV_NAMES)")
+                        "or ${CMAKE_CURRENT_LIST_DIR}/../invparam/ip_sources.cmake (CIG_IP_RTL_SV_NAMES)")
   endif()
 endforeach()
