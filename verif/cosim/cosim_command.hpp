@@ -39,8 +39,8 @@ struct CosimCommand {
   int run();
 
  private:
-  int run_quadtree();
-  int run_invparam();  // cosim_invparam.cpp
+  int run_quadtree();  // quadtree/cosim_quadtree.cpp
+  int run_invparam();  // invparam/cosim_invparam.cpp
   // Before any work: the run's inputs and its outputs (the report, the trace) collide nowhere.
   void check_outputs(const FrameJobs& jobs, const CosimTrace& trace) const;
 };
