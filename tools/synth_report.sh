@@ -62,7 +62,7 @@ design_args() {
     pe_pixel) echo "qt_pe -chparam N_LOG2 9 -chparam LEVEL 9" ;;
     raster)   echo "qt_raster -chparam N_LOG2 4 -chparam TREE_LEVELS 2 -chparam G 6 -chparam PW 35 -chparam GW 20 -chparam LIGHT_COVERS 2 -chparam FOG_CODE_BITS 4" ;;
     ip_pe_57) echo "ip_pe" ;;   # W by design_pre: hierarchy -chparam on a top with submodules
-    ip_pe_64) echo "ip_pe" ;;   # trips an assertion of yosys 0.23 (rtl/README.md)
+    ip_pe_64) echo "ip_pe" ;;   # trips an assertion of yosys 0.23 (rtl/invparam/README.md)
     ip_array_16) echo "ip_array -chparam W 80 -chparam N_PP 16" ;;
     *) echo "synth_report: unknown design '$1' (pe_mid, pe_pixel, raster, ip_pe_57, ip_pe_64, ip_array_16)" >&2; exit 2 ;;
   esac

@@ -1,8 +1,8 @@
 // Cycle-level model of a recursive-subdivision raster processor (seed 004) for any architecture of
 // eq. 1 (architecture.hpp). It drives the bit-accurate kernels (hls/quadtree: PE, mask memory; the
 // pixel processor through a PixelSink) clock by clock, so its windows, pixels, mask updates and
-// cycle counts are exactly what the RTL (rtl/) must produce: verif/cosim compares them record by
-// record and cycle by cycle. The micro-architecture it defines:
+// cycle counts are exactly what the RTL (rtl/quadtree/) must produce: verif/cosim/quadtree compares
+// them record by record and cycle by cycle. The micro-architecture it defines:
 //
 // PE (one sub-window per clock). A PE holds one window and a 4-bit list of children still to do.
 //   * Load: when it holds no window (or finishes one this cycle) it takes the next window, from
@@ -180,7 +180,7 @@ class ArchModel {
       if (next_root >= roots.size() && in_flight_ == 0) break;
     }
     // At least one cycle: the one in which the frame starts (an empty frame is idle at the next
-    // edge), as the RTL counts it (verif/cosim/rtl_runner.cpp).
+    // edge), as the RTL counts it (verif/cosim/quadtree/rtl_runner.cpp).
     st.cycles = t;
     return st;
   }

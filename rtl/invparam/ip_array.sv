@@ -101,7 +101,7 @@ module ip_array #(
   assign pp_start_o = chain_start[N_PP:1];
   assign pp_valid_o = chain_valid[N_PP:1];
 
-  // ---- Limits (rtl/README.md "Stage F") -----------------------------------------------------------
+  // ---- Limits (rtl/invparam/README.md) -----------------------------------------------------------
   if (N_PP < 1 || N_PP > ip_pkg::N_PP_MAX) begin : g_bad_n_pp
     $error("ip_array: N_PP must be 1..4096");
   end

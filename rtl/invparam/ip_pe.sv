@@ -243,7 +243,7 @@ module ip_pe #(
   logic unused_tz;
   assign unused_tz = tz_q;
 
-  // ---- Limits (rtl/README.md "Stage F") -----------------------------------------------------------
+  // ---- Limits (rtl/invparam/README.md) -----------------------------------------------------------
   if (W < ip_pkg::W_MIN || W > ip_pkg::W_MAX) begin : g_bad_w
     $error("ip_pe: W must be 26..128");
   end

@@ -1,5 +1,5 @@
 // The inverse-parameter processor's token coding, parameter defaults and limits (SPEC F, seed 002;
-// rtl/README.md "Stage F"): the one SystemVerilog place they live, named as ip_pkg::NAME by
+// rtl/invparam/README.md): the one SystemVerilog place they live, named as ip_pkg::NAME by
 // ip_pe and ip_array. The C++ side is hls/invparam/tokens.hpp (the same codes), the contract.
 //
 // A token's word 1 carries its 5-bit command in the register's top bits (W-1 .. W-5): kind in

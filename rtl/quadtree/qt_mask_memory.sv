@@ -195,7 +195,7 @@ module qt_mask_memory #(
     assign rd_mask_o[r*4 +: 4] = (32'(level) < N_LOG2) ? rd_word[(32'(level)*NRD+r)*4 +: 4] : 4'h0;
   end
 
-  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // ---- Limits (rtl/quadtree/README.md "Parameters") -----------------------------------------------
   // The write loops over the set ports are unrolled by Verilator only up to its loop limit.
   if (NSET < 1 || NSET > qt_pkg::NSET_MAX) begin : g_bad_nset
     $error("qt_mask_memory: NSET must be 1..64 (one set port per PE and pixel processor)");

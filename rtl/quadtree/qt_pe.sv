@@ -355,7 +355,7 @@ module qt_pe #(
                            win_start_level, win_start_x, win_start_y,
                            in_data_i[OFF_SAMPLES +: qt_pkg::SAMPLES_W]};
 
-  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // ---- Limits (rtl/quadtree/README.md "Parameters") -----------------------------------------------
   if (N_LOG2 < qt_pkg::N_LOG2_MIN || N_LOG2 > qt_pkg::N_LOG2_MAX) begin : g_bad_n_log2
     $error("qt_pe: N_LOG2 must be 4..10");
   end

@@ -101,7 +101,7 @@ module qt_pixel_lane #(
     end
   end
 
-  // ---- Limits (rtl/README.md "Parameters"): the intensity clamp reads v[PW-2:IW] ----------------
+  // ---- Limits (rtl/quadtree/README.md "Parameters"): the intensity clamp reads v[PW-2:IW] -------
   if (PW < G + qt_pkg::PARAM_INT_BITS_MIN) begin : g_bad_pw
     $error("qt_pixel_lane: PW must be at least G + 11");
   end

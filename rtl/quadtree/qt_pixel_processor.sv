@@ -336,7 +336,7 @@ module qt_pixel_processor #(
                            rec_x, rec_y, rec_start_level, rec_start_x, rec_start_y, cfg_addr_i,
                            cfg_data_i};
 
-  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // ---- Limits (rtl/quadtree/README.md "Parameters") -----------------------------------------------
   // The lanes read parameter 0 as I and 1 as W; the light index holds a cover entry + 1.
   if (NP != 2) begin : g_bad_np
     $error("qt_pixel_processor: NP must be 2 (I and W)");

@@ -1,15 +1,15 @@
 // The quadtree RTL's record layout, derived unit counts, parameter defaults and limits
-// (rtl/README.md "Records", "Parameters"): the one SystemVerilog place they live. Every module and
-// the co-simulation wrapper take them from here as qt_pkg::NAME; the C++ mirror is the field table
-// of verif/cosim/record_bits.hpp (widths from the hls/ types), checked against the Verilated
-// models by cosim.RtlLayout.* and rtl.RtlWindowFields.*. Adding a record field is an edit here
-// (its number, its count and width in field_count / field_elem_w) and one there.
+// (rtl/quadtree/README.md "Records", "Parameters"): the one SystemVerilog place they live. Every
+// module and the co-simulation wrapper take them from here as qt_pkg::NAME; the C++ mirror is the
+// field table of verif/cosim/record_bits.hpp (widths from the hls/ types), checked against the
+// Verilated models by cosim.RtlLayout.* and rtl.RtlWindowFields.*. Adding a record field is an edit
+// here (its number, its count and width in field_count / field_elem_w) and one there.
 //
 // Why functions of the parameters rather than packed struct types: the widths of d, f, a, b and
 // the gradients are module parameters (the synthesis report runs the coarse format), and a package
-// type cannot depend on them. Written in the subset both Debian tools read (rtl/README.md): field
-// numbers are localparams (yosys 0.23 does not treat enum items as constants inside a constant
-// function), functions assign their name (no `return`), no $bits of a type.
+// type cannot depend on them. Written in the subset both Debian tools read (rtl/README.md
+// "Conventions"): field numbers are localparams (yosys 0.23 does not treat enum items as constants
+// inside a constant function), functions assign their name (no `return`), no $bits of a type.
 package qt_pkg;
 
   // A package's constants serve every module, and a lint run whose top is one module uses only
@@ -141,7 +141,7 @@ package qt_pkg;
   } mask_set_t;
   localparam int MASK_SET_W = LEVEL_W + 2 * COORD_W + CHILD_W;   // $bits(mask_set_t): 26
 
-  // ---- Configuration port (rtl/README.md "Configuration port") ----------------------------------
+  // ---- Configuration port (rtl/quadtree/README.md "Configuration port") -------------------------
   localparam int CFG_TARGET_W = 3;
   localparam int CFG_ADDR_W = 32;
   localparam int CFG_DATA_W = 65;             // a light cover sample: {priority 17, R, G, B 16}

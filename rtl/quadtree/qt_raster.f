@@ -1,17 +1,18 @@
 // qt_raster.f: the quadtree raster processor (SPEC E, seed 004), top module qt_raster, for
 // simulators other than the project's own Verilator flow (verif/cosim). The sources in compile
-// order (the package first), paths relative to this file; the list is rtl/qt_sources.cmake's
-// CIG_RTL_SV_NAMES (ctest rtl_filelist.qt_raster checks that they agree and lints it). Read it
-// with -F where the tool has it (paths relative to the list), or with -f from rtl/:
-//   verilator --lint-only -Wall -F rtl/qt_raster.f --top-module qt_raster -GN_LOG2=9 -GTREE_LEVELS=2
-//   vlog -sv -F rtl/qt_raster.f; vsim qt_raster -gN_LOG2=9 -gTREE_LEVELS=2           (Questa)
-//   vcs -sverilog -F rtl/qt_raster.f -top qt_raster -pvalue+qt_raster.N_LOG2=9        (VCS)
-//   cd rtl && iverilog -g2012 -c qt_raster.f -s qt_raster -Pqt_raster.N_LOG2=9         (Icarus)
+// order (the package first), paths relative to this file; the list is
+// rtl/quadtree/qt_sources.cmake's CIG_RTL_SV_NAMES (ctest rtl_filelist.qt_raster checks that they
+// agree and lints it). Read it with -F where the tool has it (paths relative to the list), or with
+// -f from rtl/quadtree/:
+//   verilator --lint-only -Wall -F rtl/quadtree/qt_raster.f --top-module qt_raster -GN_LOG2=9 -GTREE_LEVELS=2
+//   vlog -sv -F rtl/quadtree/qt_raster.f; vsim qt_raster -gN_LOG2=9 -gTREE_LEVELS=2        (Questa)
+//   vcs -sverilog -F rtl/quadtree/qt_raster.f -top qt_raster -pvalue+qt_raster.N_LOG2=9     (VCS)
+//   cd rtl/quadtree && iverilog -g2012 -c qt_raster.f -s qt_raster -Pqt_raster.N_LOG2=9     (Icarus)
 // (only Verilator is run here; a top parameter: Verilator -GNAME=V, Questa vsim -gNAME=V,
 // VCS -pvalue+qt_raster.NAME=V, Icarus -Pqt_raster.NAME=V).
 //
-// Parameters of qt_raster (defaults: the fine format at N = 512; rtl/README.md "Parameters", the
-// limits checked at elaboration):
+// Parameters of qt_raster (defaults: the fine format at N = 512; rtl/quadtree/README.md
+// "Parameters", the limits checked at elaboration):
 //   N_LOG2         9     raster of 2^N_LOG2 lines (4..10)
 //   TREE_LEVELS    1     levels of the final quadtree of PEs: 1 the pipeline np (9p), 2 with
 //                        N_LOG2 = 9 the pipeline-tree 7p2t (1..min(N_LOG2, 5))

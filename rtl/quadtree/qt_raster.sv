@@ -5,8 +5,8 @@
 // memory, the configuration port and the trace ports of the co-simulation.
 // TREE_LEVELS = 1 is the pipeline `np`; N_LOG2 = 9, TREE_LEVELS = 2 is `7p2t`.
 //
-// Timing: cmodel/quadtree/arch_model.hpp (rtl/README.md "Cycle semantics"). Each PE has its own
-// input FIFO (FIFO p of PE p, FIFO 0 the input port's), each pixel processor its own
+// Timing: cmodel/quadtree/arch_model.hpp (rtl/quadtree/README.md "Cycle semantics"). Each PE has
+// its own input FIFO (FIFO p of PE p, FIFO 0 the input port's), each pixel processor its own
 // (FIFO NPE + u); FIFO ready and valid are registers, so every unit sees the state at the start of
 // the cycle, and the mask memory writes the cycle's set requests and their closure at the edge.
 // PE numbering (= the model's): pipeline PEs 0..PIPE_LEVELS-1 (level 1 first), then the tree by
@@ -229,7 +229,7 @@ module qt_raster #(
   assign mask_set_o = set;
   assign busy_o = (|fifo_rvalid) || (|pe_busy);
 
-  // ---- Limits (rtl/README.md "Parameters") --------------------------------------------------------
+  // ---- Limits (rtl/quadtree/README.md "Parameters") -----------------------------------------------
   // The PE placement above knows tree depths 0..4; the mask memory takes a set port per unit.
   if (N_LOG2 < qt_pkg::N_LOG2_MIN || N_LOG2 > qt_pkg::N_LOG2_MAX) begin : g_bad_n_log2
     $error("qt_raster: N_LOG2 must be 4..10");

@@ -1,7 +1,7 @@
-// The fields of a window record (rtl/README.md, "Records"; hls/quadtree/records.hpp QuadWindow),
-// as named slices at the offsets of qt_pkg's layout (wiring only): the PE and the pixel processor
-// read their fields through this module. It also checks the record widths' limits, since both
-// instantiate it with their parameters.
+// The fields of a window record (rtl/quadtree/README.md, "Records"; hls/quadtree/records.hpp
+// QuadWindow), as named slices at the offsets of qt_pkg's layout (wiring only): the PE and the
+// pixel processor read their fields through this module. It also checks the record widths' limits,
+// since both instantiate it with their parameters.
 module qt_window_fields #(
   parameter int NE = qt_pkg::NE_DEFAULT,
   parameter int NP = qt_pkg::NP_DEFAULT,
@@ -73,7 +73,7 @@ module qt_window_fields #(
   assign start_x_o    = window_i[OFF_START_X +: qt_pkg::COORD_W];
   assign start_y_o    = window_i[OFF_START_Y +: qt_pkg::COORD_W];
 
-  // ---- Limits of the record widths (rtl/README.md "Parameters") ---------------------------------
+  // ---- Limits of the record widths (rtl/quadtree/README.md "Parameters") ------------------------
   // edge_count must count the edges; d is formed from A and B sign-extended and shifted (EW > AW);
   // f adds gradients sign-extended to PW bits (GW <= PW).
   if (NE < 1 || NE >= (1 << qt_pkg::EDGE_COUNT_W)) begin : g_bad_ne

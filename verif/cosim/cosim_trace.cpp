@@ -13,9 +13,9 @@
 namespace cig::cli {
 
 TraceCost trace_cost(const std::string& configuration) {
-  // Bytes and seconds per traced cycle, measured (rtl/README.md "Tracing"): the quadtree's 512-line
-  // configurations on airfield frame 0, channel 1 (7p2t: the whole frame, 883 MB, about 95 s more
-  // on an idle machine; 9p: cycles 20000:29999), its 64-line ones on the whole of
+  // Bytes and seconds per traced cycle, measured (verif/cosim/README.md "Tracing"): the quadtree's
+  // 512-line configurations on airfield frame 0, channel 1 (7p2t: the whole frame, 883 MB, about
+  // 95 s more on an idle machine; 9p: cycles 20000:29999), its 64-line ones on the whole of
   // scenes/small/overlap.polys.json, stage F's on scenes/polyhedra.json frame 0 (80- and 73-bit
   // registers, 2026-11-27). The bytes follow the signals that change, so they are typical figures;
   // the seconds are what the trace adds to the run, on the shared 2-core machine (at a load of 4 to

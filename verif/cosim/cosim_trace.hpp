@@ -17,7 +17,7 @@
 
 namespace cig::cli {
 
-// What tracing one cycle costs in a configuration (measured: rtl/README.md "Tracing").
+// What tracing one cycle costs in a configuration (measured: verif/cosim/README.md "Tracing").
 struct TraceCost {
   double bytes_per_cycle = 0;
   double seconds_per_cycle = 0;

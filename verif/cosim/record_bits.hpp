@@ -1,8 +1,8 @@
-// Bit-level records of the quadtree RTL (rtl/README.md, "Records"): the C++ kernels' QuadWindow
-// packed LSB first exactly as the RTL carries it, so that the co-simulation compares the RTL's
-// records with the model's bit for bit, and reports a mismatch field by field.
+// Bit-level records of the quadtree RTL (rtl/quadtree/README.md, "Records"): the C++ kernels'
+// QuadWindow packed LSB first exactly as the RTL carries it, so that the co-simulation compares the
+// RTL's records with the model's bit for bit, and reports a mismatch field by field.
 //
-// The layout has one SystemVerilog place, rtl/qt_pkg.sv (field numbers F_*, field_count,
+// The layout has one SystemVerilog place, rtl/quadtree/qt_pkg.sv (field numbers F_*, field_count,
 // field_elem_w), and one C++ place, RecordFields<P>::visit below: the fields in the same order,
 // each named once, its width and signedness taken from the type the hls/ record gives it
 // (hls/quadtree/records.hpp), its element count from the member's array extent. Everything else

@@ -4,8 +4,9 @@
 // random paths down the full 1024-line grid), the coverage equals an exact integer point-in-polygon
 // test at every sample of random polygons, a random tiling covers every sample once, the planes
 // are the exact roundings of Newell's, the masks' closure is the brute-force fixpoint, and the
-// pixel processor's colours follow the formula of rtl/README.md. The same file runs natively and
-// with the SystemC-mapped types; Quadtree.Digest digests every output (kernel_bits_identical).
+// pixel processor's colours follow the formula of rtl/quadtree/README.md. The same file runs
+// natively and with the SystemC-mapped types; Quadtree.Digest digests every output
+// (kernel_bits_identical).
 #include <algorithm>
 #include <cstdint>
 #include <memory>
@@ -397,7 +398,7 @@ TEST(QuadtreeMasks, ClosureIsTheBruteForceFixpoint) {
 
 // ---- Pixel processor --------------------------------------------------------------------------------------
 
-// The colour of a fresh sample by the formula of rtl/README.md, written with plain integers.
+// The colour of a fresh sample by the formula of rtl/quadtree/README.md, written with plain integers.
 std::int64_t readme_code(std::int64_t vw, int w_exponent) {
   std::int64_t s = std::min<std::int64_t>(vw, (std::int64_t{1} << 41) - 1);
   if (s <= 0) return 0;

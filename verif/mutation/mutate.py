@@ -194,7 +194,7 @@ def main():
     ap.add_argument("--list", action="append", help="mutant lists (default: rtl_mutants.tsv, model_mutants.tsv)")
     ap.add_argument("--only", help="comma-separated mutant ids")
     ap.add_argument("--check", action="store_true", help="only check that every mutant applies")
-    ap.add_argument("--markdown", action="store_true", help="the table as Markdown (rtl/README.md)")
+    ap.add_argument("--markdown", action="store_true", help="the table as Markdown (rtl/quadtree/README.md, rtl/invparam/README.md)")
     ap.add_argument("--timeout", type=int, default=600, help="seconds per mutant's test run (a hang is caught)")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--width", type=int, default=110, help="first mismatch: characters shown")

@@ -1,6 +1,6 @@
-# A parameter limit of the quadtree RTL (rtl/qt_pkg.sv, checked by $error at elaboration): TOOL
-# (verilator: `--lint-only -Wall`; yosys: `read_verilog -sv` + `hierarchy -check`) on module TOP
-# of SOURCES with PARAMS (NAME=VALUE;...) must fail and print EXPECT, or, with EXPECT empty,
+# A parameter limit of the quadtree RTL (rtl/quadtree/qt_pkg.sv, checked by $error at elaboration):
+# TOOL (verilator: `--lint-only -Wall`; yosys: `read_verilog -sv` + `hierarchy -check`) on module
+# TOP of SOURCES with PARAMS (NAME=VALUE;...) must fail and print EXPECT, or, with EXPECT empty,
 # pass cleanly (the good defaults).
 # Usage: cmake -DTOOL=verilator|yosys -DVERILATOR=<path> -DYOSYS=<path> -DTOP=<module>
 #              -DPARAMS=<list> -DEXPECT=<text> -DSOURCES=<list> -P <this>

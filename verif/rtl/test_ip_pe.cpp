@@ -1,4 +1,4 @@
-// rtl/ip_pe.sv (stage F's pixel processor) against the kernel it implements,
+// rtl/invparam/ip_pe.sv (stage F's pixel processor) against the kernel it implements,
 // hls/invparam/pixel_processor.hpp pp_clock, cycle by cycle: random token streams (every kind and
 // command bit, words drawn so that the comparator goes both ways and ties occur), bubbles inside
 // tokens, stray start lines and clock enables low, configuration writes of RGeps and RGnear at

@@ -8,7 +8,7 @@
 //     back-pressure: the children it emits, their order, full flags and mask set requests against
 //     evaluate_child;
 //   * qt_window_fields: every field of random windows at the offset of the C++ field table
-//     (cosim/record_bits.hpp), i.e. rtl/qt_pkg.sv's layout and the table agree field by field;
+//     (cosim/record_bits.hpp), i.e. rtl/quadtree/qt_pkg.sv's layout and the table agree field by field;
 // Whole architectures (qt_raster) are compared with the kernels and the architecture model, record
 // for record and cycle for cycle, by verif/cosim.
 #include <cstdint>
@@ -40,7 +40,7 @@
 namespace {
 
 using namespace cig;
-using P = hls::QuadFixedArith<hls::QuadFormatFine>;  // the RTL's default widths (rtl/README.md)
+using P = hls::QuadFixedArith<hls::QuadFormatFine>;  // the RTL's default widths (rtl/quadtree/README.md)
 using cosim::Bits;
 using cosim::MaskSetLayout;
 using cosim::RecordField;
@@ -316,8 +316,8 @@ TEST(RtlPe, PixelLevelMatchesEvaluateChild) { pe_random_test<Vqt_pe_n4_l4>(4, 4,
 
 // ---- qt_window_fields ---------------------------------------------------------------------------
 
-// Random windows packed by the C++ field table read back through qt_window_fields, whose slices
-// are rtl/qt_pkg.sv's offsets: each port against the bits the table puts the field in. A field
+// Random windows packed by the C++ field table read back through qt_window_fields, whose slices are
+// rtl/quadtree/qt_pkg.sv's offsets: each port against the bits the table puts the field in. A field
 // moved, resized or added on one side only fails here, with its name.
 TEST(RtlWindowFields, EveryFieldAtTheTablesOffset) {
   auto ctx = std::make_unique<VerilatedContext>();

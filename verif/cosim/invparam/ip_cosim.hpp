@@ -1,8 +1,8 @@
-// Lock-step co-simulation of the inverse-parameter array RTL (rtl/ip_array.sv, Verilated inside
-// ip_array_cosim_tb.sv) against the clock-level model (cmodel/invparam/systolic_array.hpp,
-// run_array_frame with the PP of hls/invparam/pixel_processor.hpp): the same frame stream, with
-// the same input gaps and VT back-pressure (ArrayPacing, stall_hit), goes through both, and every
-// cycle is compared while the model runs (its observer steps the RTL):
+// Lock-step co-simulation of the inverse-parameter array RTL (rtl/invparam/ip_array.sv, Verilated
+// inside ip_array_cosim_tb.sv) against the clock-level model (cmodel/invparam/systolic_array.hpp,
+// run_array_frame with the PP of hls/invparam/pixel_processor.hpp): the same frame stream, with the
+// same input gaps and VT back-pressure (ArrayPacing, stall_hit), goes through both, and every cycle
+// is compared while the model runs (its observer steps the RTL):
 //   * every PP's Output word (RGres) and delayed Ctrl lines (start, valid): every token at every PP;
 //   * the VT bus: which PP drives it (or none), its par and obj, in advancing and in held cycles;
 //   * the handshake: in_ready_o low exactly in the cycles the model holds (then vt_valid_o high);

@@ -1,4 +1,4 @@
-// The Verilated configurations of rtl/ip_array.sv inside its co-simulation wrapper
+// The Verilated configurations of rtl/invparam/ip_array.sv inside its co-simulation wrapper
 // (ip_array_cosim_tb.sv; verif/cosim/CMakeLists.txt verilates each with its own prefix, FST
 // tracing compiled in) behind one interface (ip_rtl_runner_impl.hpp). Named by the seed's word w
 // (64, 57); each model's W is the register width w + 16 (80, 73), which the harness checks.

@@ -1,9 +1,9 @@
-// The runner of a Verilated configuration of rtl/ip_array.sv inside its co-simulation wrapper
-// (ip_array_cosim_tb.sv, registered stimulus): a template over the generated classes, shared by the
-// co-simulation's models (ip_rtl_runner.cpp, FST tracing compiled in) and the benchmark's
-// (rtl_runner_fast.cpp). Include after the generated headers, inside the diagnostics push that
-// silences them. Words of W = Tb::W bits (the register width, 73 and 80 here: the ports are
-// VlWide; verilator_ports.hpp serves any width) cross the interface as IpWord.
+// The runner of a Verilated configuration of rtl/invparam/ip_array.sv inside its co-simulation
+// wrapper (ip_array_cosim_tb.sv, registered stimulus): a template over the generated classes,
+// shared by the co-simulation's models (ip_rtl_runner.cpp, FST tracing compiled in) and the
+// benchmark's (rtl_runner_fast.cpp). Include after the generated headers, inside the diagnostics
+// push that silences them. Words of W = Tb::W bits (the register width, 73 and 80 here: the ports
+// are VlWide; verilator_ports.hpp serves any width) cross the interface as IpWord.
 #pragma once
 
 #include <memory>

@@ -1,13 +1,13 @@
-// Co-simulation of the inverse-parameter array RTL (rtl/ip_array.sv) against the clock-level model
-// (ip_cosim.hpp): zero mismatches of any PP's output word, Ctrl lines and VT result, of the
-// handshake (held cycles) and of the frame's cycles, in every Verilated configuration (W, N_PP) =
-// (64, 8), (64, 64), (57, 16) (W the seed's word; the RTL's registers have W + 16 bits), on single
-// objects (a box, a prism, faces grazed by a sample, an empty frame, the eye inside an object, a
-// near plane through an object), random scenes of random words (up to the register's range) and
-// boxes, random RGnear, the polyhedra scene's frames set up on an N_PP x N_PP lattice, frames back
-// to back without reset (RGeps and RGnear rewritten between them), and random input gaps and VT
-// back-pressure. Each failure prints the first mismatch (frame, cycle, PP, signal, expected, got).
-// CIG_COSIM_TRACE_DIR=DIR writes every run's FST waveform to DIR.
+// Co-simulation of the inverse-parameter array RTL (rtl/invparam/ip_array.sv) against the
+// clock-level model (ip_cosim.hpp): zero mismatches of any PP's output word, Ctrl lines and VT
+// result, of the handshake (held cycles) and of the frame's cycles, in every Verilated
+// configuration (W, N_PP) = (64, 8), (64, 64), (57, 16) (W the seed's word; the RTL's registers
+// have W + 16 bits), on single objects (a box, a prism, faces grazed by a sample, an empty frame,
+// the eye inside an object, a near plane through an object), random scenes of random words (up to
+// the register's range) and boxes, random RGnear, the polyhedra scene's frames set up on an N_PP x
+// N_PP lattice, frames back to back without reset (RGeps and RGnear rewritten between them), and
+// random input gaps and VT back-pressure. Each failure prints the first mismatch (frame, cycle, PP,
+// signal, expected, got). CIG_COSIM_TRACE_DIR=DIR writes every run's FST waveform to DIR.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Lock-step co-simulation of the quadtree RTL (rtl/qt_raster.sv, Verilated) against the
+// Lock-step co-simulation of the quadtree RTL (rtl/quadtree/qt_raster.sv, Verilated) against the
 // bit-accurate kernels driven by the cycle-level architecture model (cmodel/quadtree/
 // arch_model.hpp): the same stream of level-0 windows (the setup kernel's output) goes through
 // both, with the same input gaps and output stalls, and every record is compared:
@@ -31,7 +31,8 @@
 
 namespace cig::cosim {
 
-// The format the RTL implements (rtl/README.md parameters PW, GW, G) and its record layout.
+// The format the RTL implements (rtl/quadtree/README.md parameters PW, GW, G) and its record
+// layout.
 using RtlArith = hls::QuadFixedArith<hls::QuadFormatFine>;
 using RtlLayout = RecordLayout<RtlArith>;
 inline RtlLayout rtl_layout() { return RtlLayout(); }
@@ -131,7 +132,8 @@ struct RtlConfig {
 std::vector<RtlConfig> rtl_configs();
 
 // What a Verilated configuration was elaborated with: the public parameters of its wrapper
-// (qt_raster_cosim_tb.sv), i.e. rtl/qt_pkg.sv's layout and unit counts as the RTL computed them.
+// (qt_raster_cosim_tb.sv), i.e. rtl/quadtree/qt_pkg.sv's layout and unit counts as the RTL computed
+// them.
 struct RtlModelParams {
   int ne, np, ew, aw, pw, gw, g;  // record widths (qt_raster NE .. G)
   int win_w, pix_w, mask_set_w;   // record and mask set request widths
@@ -150,11 +152,11 @@ class RtlRunner {
   // covers), frame start, the stream with the stalls, the read-out of every pixel.
   virtual Trace run(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
                     const StallConfig& stalls, long long max_cycles) = 0;
-  // A frame cut short (a frame overrun, rtl/README.md "Frame"): configuration, frame start, the
-  // stream with the stalls for `cycles` cycles, then `hold` more cycles with no input and every
-  // pixel processor stalled (the records back up: FIFOs fill, PEs stall), and it returns without
-  // draining the frame or reading it out; the next run's frame start must clear what is left.
-  // The trace holds the events of the first `cycles` cycles, no image.
+  // A frame cut short (a frame overrun, rtl/quadtree/README.md "Frame"): configuration, frame
+  // start, the stream with the stalls for `cycles` cycles, then `hold` more cycles with no input
+  // and every pixel processor stalled (the records back up: FIFOs fill, PEs stall), and it returns
+  // without draining the frame or reading it out; the next run's frame start must clear what is
+  // left. The trace holds the events of the first `cycles` cycles, no image.
   virtual Trace run_cut(const std::vector<hls::QuadWindow<RtlArith>>& roots, const quad::PixelFrame<RtlArith>& pixels,
                         const StallConfig& stalls, long long cycles, int hold) = 0;
   // FST waveform of the next run (this build must have tracing on): the cycles and scopes the

@@ -1,4 +1,4 @@
-// The Verilated configurations of rtl/qt_raster.sv inside its co-simulation wrapper
+// The Verilated configurations of rtl/quadtree/qt_raster.sv inside its co-simulation wrapper
 // (qt_raster_cosim_tb.sv; verif/cosim/CMakeLists.txt verilates each with its own prefix, FST
 // tracing compiled in) behind one interface (rtl_runner_impl.hpp).
 

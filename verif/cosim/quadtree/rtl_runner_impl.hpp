@@ -1,5 +1,5 @@
-// The runner of a Verilated configuration of rtl/qt_raster.sv inside its co-simulation wrapper
-// (qt_raster_cosim_tb.sv): table configuration, frame start, the polygon stream with the
+// The runner of a Verilated configuration of rtl/quadtree/qt_raster.sv inside its co-simulation
+// wrapper (qt_raster_cosim_tb.sv): table configuration, frame start, the polygon stream with the
 // verification stalls, the trace ports read every cycle, the read-out of the final pixels. A
 // template over the generated classes, shared by the co-simulation's models (rtl_runner.cpp, FST
 // tracing compiled in) and the benchmark's (rtl_runner_fast.cpp, built for speed, no tracing).

@@ -277,10 +277,11 @@ TEST(Cosim, EmptyFrameTakesTheFrameStartCycleOnBothSides) {
 
 // Frames through ONE Verilated instance, reset once when it is made and never again: each frame
 // is the configuration writes, the frame start (frame_start_i) and the stream (RtlRunner::run).
-// The model's side of every frame is an independent frame (cosim_stream: a new ArchModel, a
-// cleared mask memory, the pixel states begun), because the frame start must clear every state
-// (rtl/README.md "Frame"): frame k of the RTL must equal it whatever frames 0..k-1 left behind.
-// The order makes every frame-start clear matter (rtl/README.md "Frame-start clears"):
+// The model's side of every frame is an independent frame (cosim_stream: a new ArchModel, a cleared
+// mask memory, the pixel states begun), because the frame start must clear every state
+// (rtl/quadtree/README.md "Frame"): frame k of the RTL must equal it whatever frames 0..k-1 left
+// behind. The order makes every frame-start clear matter (rtl/quadtree/README.md "Frame-start
+// clears"):
 //   1. a full-screen opaque polygon owns every pixel and fills every mask word (and leaves the
 //      input FIFO's pointers at 1: one root);
 //   2. random polygons: masks that survived would drop them, pixel states that survived would
@@ -403,12 +404,12 @@ void expect_cut_frame(const ScreenFrame& f, RtlRunner& rtl, const RtlConfig& cfg
   EXPECT_TRUE(rtl_cut.busy_at_cut) << "the frame was cut before it was done";
 }
 
-// A frame start that cuts a frame short (a frame overrun, rtl/README.md "Frame"): FIFOs still hold
-// records and PEs windows, which only the frame start's clears of the FIFO counts and the PEs'
-// busy and todo remove (a frame that ran to its end leaves them empty, so FramesWithoutReset cannot
-// see those clears). The cut frame's cycles match the model's; the frame after it must equal an
-// independent frame. Cut once mid-frame (FIFOs partly full) and once backed up (every FIFO full,
-// every PE stalled), one Verilated instance per configuration.
+// A frame start that cuts a frame short (a frame overrun, rtl/quadtree/README.md "Frame"): FIFOs
+// still hold records and PEs windows, which only the frame start's clears of the FIFO counts and
+// the PEs' busy and todo remove (a frame that ran to its end leaves them empty, so
+// FramesWithoutReset cannot see those clears). The cut frame's cycles match the model's; the frame
+// after it must equal an independent frame. Cut once mid-frame (FIFOs partly full) and once backed
+// up (every FIFO full, every PE stalled), one Verilated instance per configuration.
 TEST(Cosim, FrameStartCutsAnUnfinishedFrame) {
   for (int t = 1; t <= 2; ++t) {
     if (configuration_missing(6, t)) continue;
@@ -433,8 +434,8 @@ TEST(Cosim, FrameStartCutsAnUnfinishedFrame) {
 }
 
 // The C++ field table (record_bits.hpp: widths from the hls/ types) against what every Verilated
-// configuration elaborated from rtl/qt_pkg.sv (its wrapper's public parameters), and the unit
-// counts against the architecture model's: an edit of one side alone fails here, by name.
+// configuration elaborated from rtl/quadtree/qt_pkg.sv (its wrapper's public parameters), and the
+// unit counts against the architecture model's: an edit of one side alone fails here, by name.
 // (rtl.RtlWindowFields.* checks every field's offset.)
 TEST(RtlLayout, FieldTableMatchesTheVerilatedModels) {
   const RtlLayout L = rtl_layout();
