@@ -64,15 +64,21 @@ struct PpOutputs {
   bool ends_column = false;  // this clock is a T_Col's clock 4 (pp_ends_column)
 };
 
-// Power-on / configuration: every register 0 except RGtin = MAX, RGeps = eps (< 0) and RGnear =
-// tau_near (1/near; MAX: no near plane).
+// A configuration write: RGeps = eps (< 0) and RGnear = tau_near (1/near; MAX: no near plane),
+// every other register as it is (between frames, without reset).
+template <int W>
+CIG_HLS_INLINE void pp_configure(PpState<W>& st, const Word<W>& eps, const Word<W>& tau_near) {
+  st.RGeps = eps;
+  st.RGnear = tau_near;
+}
+
+// Power-on, then the configuration write: every register 0 except RGtin = MAX, RGeps, RGnear.
 template <int W>
 CIG_HLS_INLINE void pp_reset(PpState<W>& st, const Word<W>& eps, const Word<W>& tau_near) {
   st = PpState<W>();
   st.RGres = st.RGh = st.RGtout = st.RGobj = word_zero<W>();
   st.RGtin = word_max<W>();
-  st.RGeps = eps;
-  st.RGnear = tau_near;
+  pp_configure(st, eps, tau_near);
 }
 
 // The control unit's counter: start restarts it; a 4-word token counts 1..4; an empty code is

@@ -15,16 +15,6 @@ list(TRANSFORM CIG_IP_RTL_SV_NAMES PREPEND ${CMAKE_CURRENT_LIST_DIR}/ OUTPUT_VAR
 # by the seed's w (Vip_array_w64_n8 has W = 80); the harnesses check W against hls word_bits(w).
 set(CIG_IP_GUARD_BITS 16)
 
-# A file in rtl/invparam/ missing from this list would silently drop out of lint, synthesis and
-# the models; a module at rtl/'s top would belong to no processor.
-file(GLOB cig_ip_rtl_sv_present CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/*.sv)
-foreach(file IN LISTS cig_ip_rtl_sv_present)
-  if(NOT file IN_LIST CIG_IP_RTL_SV)
-    message(FATAL_ERROR "${file} is not listed in ${CMAKE_CURRENT_LIST_FILE} (CIG_IP_RTL_SV_NAMES)")
-  endif()
-endforeach()
-get_filename_component(cig_rtl_dir ${CMAKE_CURRENT_LIST_DIR} DIRECTORY)
-file(GLOB cig_ip_rtl_sv_stray CONFIGURE_DEPENDS ${cig_rtl_dir}/*.sv)
-if(cig_ip_rtl_sv_stray)
-  message(FATAL_ERROR "${cig_ip_rtl_sv_stray}: a module at rtl/'s top; put it in its processor's folder")
-endif()
+# Every .sv of this folder listed, none at rtl/'s top (check_sources.cmake).
+include(${CMAKE_CURRENT_LIST_DIR}/../check_sources.cmake)
+cig_check_rtl_folder("${CIG_IP_RTL_SV}" CIG_IP_RTL_SV_NAMES)

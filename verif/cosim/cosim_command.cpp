@@ -8,6 +8,9 @@
 // The options of both processors and the checks they share; each processor's run is in its folder
 // (quadtree/cosim_quadtree.cpp, invparam/cosim_invparam.cpp).
 #include "cosim_command.hpp"
+
+#include <iostream>
+
 #include "cli/cli_common.hpp"
 #include "cli/frame_jobs.hpp"
 #include "cli/output_plan.hpp"
@@ -76,6 +79,25 @@ void CosimCommand::check_outputs(const FrameJobs& jobs, const CosimTrace& trace)
   if (!report_file.empty()) plan.file(report_file, "--report");
   trace.declare_outputs(plan);
   plan.check();
+}
+
+void CosimTotals::add(long long n_compared, long long n_mismatches, bool cycles_equal,
+                      const std::string& first_mismatch) {
+  compared += n_compared;
+  mismatches += n_mismatches;
+  bad_cycles += cycles_equal ? 0 : 1;
+  if (first.empty()) first = first_mismatch;
+}
+
+int CosimTotals::finish(nlohmann::ordered_json& rep, const char* what, const char* compared_key,
+                        const char* images) const {
+  std::cout << "all: " << compared << " " << what << " compared, " << mismatches << " mismatches, " << bad_cycles << " "
+            << images << " with a cycle mismatch\n";
+  if (!first.empty()) std::cout << "first mismatch: " << first << "\n";
+  rep[compared_key] = compared;
+  rep["mismatches"] = mismatches;
+  rep["cycle_mismatches"] = bad_cycles;
+  return mismatches == 0 && bad_cycles == 0 ? 0 : 1;
 }
 
 }  // namespace cig::cli

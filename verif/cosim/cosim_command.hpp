@@ -19,6 +19,17 @@ namespace cig::cli {
 class CosimTrace;
 class FrameJobs;
 
+// A run's totals over its images, and its last lines (stdout), report keys and exit status, the
+// same for both processors; `compared` counts what the processor compares (records or values).
+struct CosimTotals {
+  long long compared = 0, mismatches = 0, bad_cycles = 0;
+  std::string first;  // the first mismatch ("" if none)
+  void add(long long n_compared, long long n_mismatches, bool cycles_equal, const std::string& first_mismatch);
+  // Prints "all: N <what> compared, M mismatches, K <images> with a cycle mismatch" (and the first
+  // mismatch), sets rep[compared_key], "mismatches", "cycle_mismatches"; returns the exit status.
+  int finish(nlohmann::ordered_json& rep, const char* what, const char* compared_key, const char* images) const;
+};
+
 struct CosimCommand {
   std::string input, arch, frames_text, trace_file, report_file;
   std::string processor = "quadtree";  // --processor quadtree|invparam

@@ -74,12 +74,8 @@ void set_port_word(T& v, int width, PortWord x) {
 }
 template <std::size_t N>
 void set_port_word(VlWide<N>& v, int width, PortWord x) {
-  for (std::size_t k = 0; k < N; ++k) {
-    const int lo = int(k) * 32;
-    const std::uint32_t piece = lo < 128 ? std::uint32_t(x >> lo) : 0u;
-    const int keep = std::max(0, std::min(32, width - lo));
-    v[k] = keep >= 32 ? piece : piece & ((1u << keep) - 1u);
-  }
+  set_port_field(v, 0, std::min(width, 64), std::uint64_t(x));
+  if (width > 64) set_port_field(v, 64, width - 64, std::uint64_t(x >> 64));
 }
 
 // A whole wide port from the first `width` bits of a record (the rest zero).

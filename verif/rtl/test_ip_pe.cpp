@@ -170,8 +170,9 @@ void ip_pe_random_test(std::uint64_t seed, long cycles, PeCounts* counts) {
       if (in.valid) word_in_token = in.start ? 1 : (word_in_token + 1) % 4;
     }
     if (cfg) {
-      st.RGeps = eps = new_eps;
-      st.RGnear = tau_near = new_near;
+      eps = new_eps;
+      tau_near = new_near;
+      hls::pp_configure(st, eps, tau_near);
     }
     m->clk_i = 1;
     m->eval();

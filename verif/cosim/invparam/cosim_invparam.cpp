@@ -110,29 +110,20 @@ int CosimCommand::run_invparam() {
   rep["register_bits"] = cfg.register_bits();
   rep["pixel_processors"] = cfg.n_pp;
   rep["runs"] = nlohmann::ordered_json::array();
-  long long checks = 0, mismatches = 0, bad_cycles = 0;
-  std::string first;
+  CosimTotals totals;
   Progress progress("cig cosim", (long long)frames.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
     // Progress by frame: the model runs in lock step with the RTL, so a frame's cycles are known
     // only at its end, and a frame of the built configurations takes about a second.
     const cosim::IpFrameResult r = cosim->run(frames[k], pacing);
     rep["runs"].push_back(frame_row(jobs, k, r));
-    checks += r.checks;
-    mismatches += r.mismatches;
-    bad_cycles += r.rtl_cycles == r.model_cycles ? 0 : 1;
-    if (first.empty() && !r.first.empty()) first = r.first;
+    totals.add(r.checks, r.mismatches, r.rtl_cycles == r.model_cycles, r.first);
     if (k == 0 && trace.on()) rep["trace"] = trace.finish(cosim::TracedDesign::kInvparamArray, r.seconds);
     progress.step(image_name(jobs, k) + ": " + std::to_string(r.rtl_cycles) + " cycles");
   }
-  std::cout << "all: " << checks << " values compared, " << mismatches << " mismatches, " << bad_cycles
-            << " frame(s) with a cycle mismatch\n";
-  if (!first.empty()) std::cout << "first mismatch: " << first << "\n";
-  rep["checks"] = checks;
-  rep["mismatches"] = mismatches;
-  rep["cycle_mismatches"] = bad_cycles;
+  const int status = totals.finish(rep, "values", "checks", "frame(s)");
   if (!report_file.empty()) write_text_file(report_file, report_text(rep));
-  return mismatches == 0 && bad_cycles == 0 ? 0 : 1;
+  return status;
 }
 
 }  // namespace cig::cli

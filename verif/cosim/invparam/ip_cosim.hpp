@@ -268,7 +268,7 @@ class IpCosim {
   // sides, in place from the next frame's first cycle (the other registers keep their values).
   void configure(const hls::Word<W>& eps, const hls::Word<W>& tau_near) {
     rtl_.configure(rtl_word<W>(eps), rtl_word<W>(tau_near));
-    for (hls::PpState<W>& st : chain_) configure(st, eps, tau_near);
+    for (hls::PpState<W>& st : chain_) hls::pp_configure(st, eps, tau_near);
     eps_ = eps;
     tau_near_ = tau_near;
   }
@@ -313,7 +313,7 @@ class IpCosim {
                             const invparam::ArrayPacing& pacing, const hls::Word<W>& eps,
                             const hls::Word<W>& tau_near) const {
     std::vector<hls::PpState<W>> chain = chain_;
-    for (hls::PpState<W>& st : chain) configure(st, eps, tau_near);
+    for (hls::PpState<W>& st : chain) hls::pp_configure(st, eps, tau_near);
     return invparam::run_array_frame(chain, stream, columns, pacing).clocks;
   }
   // The same with the present configuration.
@@ -325,12 +325,6 @@ class IpCosim {
   const invparam::ArrayRun<W>& last_run() const { return run_; }
 
  private:
-  // The model's side of a configuration write (pp_reset loads the same two registers).
-  static void configure(hls::PpState<W>& st, const hls::Word<W>& eps, const hls::Word<W>& tau_near) {
-    st.RGeps = eps;
-    st.RGnear = tau_near;
-  }
-
   IpRtl& rtl_;
   std::vector<hls::PpState<W>> chain_;
   hls::Word<W> eps_, tau_near_;

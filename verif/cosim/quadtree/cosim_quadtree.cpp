@@ -109,8 +109,7 @@ int CosimCommand::run_quadtree() {
   rep["start_window"] = start_window;
   rep["fan_split"] = fan_split == "on";
   rep["runs"] = nlohmann::ordered_json::array();
-  long long records = 0, mismatches = 0, bad_cycles = 0;
-  std::string first_mismatch;
+  CosimTotals totals;
   Progress progress("cig cosim", (long long)jobs.size());
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     cosim::EngineStream stream;
@@ -128,22 +127,14 @@ int CosimCommand::run_quadtree() {
       rethrow_for_image(e, input, jobs, k);
     }
     rep["runs"].push_back(image_row(jobs, k, stream, r));
-    records += r.comparison.records_compared;
-    mismatches += r.comparison.mismatches;
-    bad_cycles += r.comparison.cycles_equal ? 0 : 1;
-    if (first_mismatch.empty() && !r.comparison.first.empty()) first_mismatch = r.comparison.first;
+    totals.add(r.comparison.records_compared, r.comparison.mismatches, r.comparison.cycles_equal, r.comparison.first);
     if (k == 0 && trace.on())
       rep["trace"] = trace.finish(cosim::TracedDesign::kQuadtreeRaster, r.model.seconds + r.rtl.seconds);
     progress.step(image_name(jobs, k) + ": " + std::to_string(r.rtl.cycles) + " cycles");
   }
-  std::cout << "all: " << records << " records compared, " << mismatches << " mismatches, " << bad_cycles
-            << " image(s) with a cycle mismatch\n";
-  if (!first_mismatch.empty()) std::cout << "first mismatch: " << first_mismatch << "\n";
-  rep["records_compared"] = records;
-  rep["mismatches"] = mismatches;
-  rep["cycle_mismatches"] = bad_cycles;
+  const int status = totals.finish(rep, "records", "records_compared", "image(s)");
   if (!report_file.empty()) write_text_file(report_file, report_text(rep));
-  return mismatches == 0 && bad_cycles == 0 ? 0 : 1;
+  return status;
 }
 
 }  // namespace cig::cli
