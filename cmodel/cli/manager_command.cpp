@@ -153,60 +153,8 @@ std::string verdict(const CapacityQuestion& q, const std::vector<Shape>& shapes,
   return out;
 }
 
-}  // namespace
-
-void ManagerCommand::add_to(CLI::App& app) {
-  sub = app.add_subcommand("manager", "seed 000's scene manager as a counted model: operation counts and capacity");
-  sub->add_flag("--capacity", capacity, "the largest No per frame for each Noc and Npl x Np, and the seed's claim");
-  sub->add_option("--clock", clock_mhz, "clock, MHz (default 100)");
-  sub->add_option("--rate", rate_hz, "frame rate, Hz (default 25)");
-  sub->add_option("--cost", cost_text,
-                  "cycles per operation by kind, e.g. R=4,L=2,D=8 (kinds R, C, O, L, A, M, D; default 1 each)");
-  sub->add_option("--occluded", occluded, "numbers of occluded objects Noc (default 0,20,60,100,200)")->delimiter(',');
-  sub->add_option("--planes", planes, "planes per object Npl (with --points: every pair; default 6,12,24,48)")
-      ->delimiter(',');
-  sub->add_option("--points", points, "points per plane Np (default 4)")->delimiter(',');
-  sub->add_option("--schedule", schedule,
-                  "sequence: a frame is the three units' sum (default); pipeline: each unit its own frame, the "
-                  "slowest one's")
-      ->check(CLI::IsMember({"sequence", "pipeline"}));
-  sub->add_option("--pairs", pairs,
-                  "sphere tests: neighbours in SP, the table's No - 1 (default); all: the pseudo-code's all pairs")
-      ->check(CLI::IsMember({"neighbours", "all"}));
-}
-
-int ManagerCommand::run() {
-  if (!capacity)
-    throw InputError("", "--capacity", "cig manager needs --capacity (usage: " + std::string(kUsage) + ")");
-  if (!(clock_mhz > 0 && clock_mhz <= 1e6))
-    throw InputError("", "--clock", "the clock must be > 0 and <= 1e6 MHz, is " + number(clock_mhz));
-  if (!(rate_hz > 0 && rate_hz <= 1e4))
-    throw InputError("", "--rate", "the frame rate must be > 0 and <= 1e4 Hz, is " + number(rate_hz));
-  CapacityQuestion q;
-  q.clock_mhz = clock_mhz;
-  q.frame_hz = rate_hz;
-  q.cost = parse_cost(cost_text);
-  q.schedule = schedule == "pipeline" ? UnitSchedule::kPipeline : UnitSchedule::kSequence;
-  q.pairs = pairs == "all" ? PairTests::kAll : PairTests::kNeighbours;
-  if (occluded.empty()) throw InputError("", "--occluded", "needs at least one number");
-  for (long long n : occluded)
-    if (n < 0 || n > 1000000) throw InputError("", "--occluded", "Noc must lie in 0..1000000, is " + std::to_string(n));
-  for (long long n : planes)
-    if (n < 1 || n > kMaxPlanes) throw InputError("", "--planes", "Npl must lie in 1..4096, is " + std::to_string(n));
-  for (long long n : points)
-    if (n < 3 || n > kMaxPoints) throw InputError("", "--points", "Np must lie in 3..4096, is " + std::to_string(n));
-  std::vector<Shape> shapes;
-  if (planes.empty() && points.empty()) {
-    shapes = {{6, 4}, {12, 4}, {24, 4}, {48, 4}, {12, 8}};
-  } else {
-    const std::vector<long long> pl = planes.empty() ? std::vector<long long>{6, 12, 24, 48} : planes;
-    const std::vector<long long> pt = points.empty() ? std::vector<long long>{4} : points;
-    for (long long p : pt)
-      for (long long n : pl) shapes.push_back({std::uint32_t(n), std::uint32_t(p)});
-  }
-  std::set<std::uint32_t> shape_points;
-  for (const Shape& s : shapes) shape_points.insert(s.points);
-
+// The header: the question and its assumptions.
+void print_assumptions(const CapacityQuestion& q) {
   const bool pipelined = q.schedule == UnitSchedule::kPipeline;
   std::cout
       << "cig manager --capacity: seed 000's scene manager as a counted model (cmodel/manager/operation_counts.hpp)\n"
@@ -219,17 +167,10 @@ int ManagerCommand::run() {
       << (q.pairs == PairTests::kAll ? "between all pairs of SP (the pseudo-code's loop)"
                                      : "between neighbours of SP (the table's No - 1)")
       << "; the depth sort counted as memory traffic (the table has no comparison for it)\n";
-  int checked = 0;
-  print_capacity_table(q, occluded, shapes,
-                       "counted model (the table's formulas but for the sorter's R, its L at Noc >= 2 and its C, A, M, "
-                       "D at Noc = 0)",
-                       checked);
-  CapacityQuestion table = q;
-  table.source = CountSource::kSeedTable;
-  table.pairs = PairTests::kNeighbours;
-  print_capacity_table(table, occluded, shapes, "the seed's table as printed", checked);
-  std::cout << "(" << checked << " model entries re-counted by running the three units at No and No + 1)\n";
+}
 
+// The frame load of the seed's claim under each assumption.
+void print_claim_loads(const CapacityQuestion& q, const std::vector<Shape>& shapes) {
   // The claim's frame under each assumption.
   CapacityQuestion seq = q, pipe = q, all = q;
   seq.schedule = UnitSchedule::kSequence, seq.pairs = PairTests::kNeighbours;
@@ -253,7 +194,10 @@ int ManagerCommand::run() {
     std::cout << std::left << std::setw(10) << shape_name(s) << std::right << std::setw(20) << load(seq)
               << std::setw(18) << load(pipe) << std::setw(22) << load(table_seq) << std::setw(31) << load(all) << "\n";
   }
+}
 
+// The model's cycles per unit at the claim.
+void print_unit_cycles(const CapacityQuestion& q, const std::vector<Shape>& shapes) {
   std::cout << "\nmodel cycles per unit at No = " << kClaimObjects << ", Noc = " << kClaimOccluded << "\n"
             << std::left << std::setw(10) << "Npl x Np" << std::right << std::setw(14) << "processing" << std::setw(14)
             << "sorting" << std::setw(14) << "sorter"
@@ -264,7 +208,12 @@ int ManagerCommand::run() {
               << number(cycles(c.processing, q.cost)) << std::setw(14) << number(cycles(c.sorting, q.cost))
               << std::setw(14) << number(cycles(c.sorter, q.cost)) << "\n";
   }
+}
 
+// The verdicts on the seed's claim.
+void print_verdicts(const CapacityQuestion& q, const CapacityQuestion& table, const std::vector<Shape>& shapes,
+                    const std::set<std::uint32_t>& shape_points) {
+  const bool pipelined = q.schedule == UnitSchedule::kPipeline;
   std::cout << "\nverdict on \"about 1000 objects, 60 of them occluded\" at " << number(q.clock_mhz) << " MHz and "
             << number(q.frame_hz) << " Hz, " << costs_text(q.cost) << ", " << (pipelined ? "pipelined" : "in sequence")
             << " (largest No at Noc = 60 in brackets):\n"
@@ -277,6 +226,87 @@ int ManagerCommand::run() {
               << kClaimObjects * (kClaimObjects - 1) / 2
               << " tests at No = 1000): " << verdict(all_pairs, shapes, shape_points) << "\n";
   }
+}
+
+// The options of `cig manager --c.capacity`, checked.
+CapacityQuestion capacity_question(const ManagerCommand& c) {
+  if (!c.capacity)
+    throw InputError("", "--capacity", "cig manager needs --capacity (usage: " + std::string(kUsage) + ")");
+  if (!(c.clock_mhz > 0 && c.clock_mhz <= 1e6))
+    throw InputError("", "--clock", "the clock must be > 0 and <= 1e6 MHz, is " + number(c.clock_mhz));
+  if (!(c.rate_hz > 0 && c.rate_hz <= 1e4))
+    throw InputError("", "--rate", "the frame rate must be > 0 and <= 1e4 Hz, is " + number(c.rate_hz));
+  CapacityQuestion q;
+  q.clock_mhz = c.clock_mhz;
+  q.frame_hz = c.rate_hz;
+  q.cost = parse_cost(c.cost_text);
+  q.schedule = c.schedule == "pipeline" ? UnitSchedule::kPipeline : UnitSchedule::kSequence;
+  q.pairs = c.pairs == "all" ? PairTests::kAll : PairTests::kNeighbours;
+  if (c.occluded.empty()) throw InputError("", "--occluded", "needs at least one number");
+  for (long long n : c.occluded)
+    if (n < 0 || n > 1000000) throw InputError("", "--occluded", "Noc must lie in 0..1000000, is " + std::to_string(n));
+  for (long long n : c.planes)
+    if (n < 1 || n > kMaxPlanes) throw InputError("", "--planes", "Npl must lie in 1..4096, is " + std::to_string(n));
+  for (long long n : c.points)
+    if (n < 3 || n > kMaxPoints) throw InputError("", "--points", "Np must lie in 3..4096, is " + std::to_string(n));
+  return q;
+}
+
+// The object shapes Npl x Np asked for.
+std::vector<Shape> object_shapes(const ManagerCommand& c) {
+  std::vector<Shape> shapes;
+  if (c.planes.empty() && c.points.empty()) {
+    shapes = {{6, 4}, {12, 4}, {24, 4}, {48, 4}, {12, 8}};
+  } else {
+    const std::vector<long long> pl = c.planes.empty() ? std::vector<long long>{6, 12, 24, 48} : c.planes;
+    const std::vector<long long> pt = c.points.empty() ? std::vector<long long>{4} : c.points;
+    for (long long p : pt)
+      for (long long n : pl) shapes.push_back({std::uint32_t(n), std::uint32_t(p)});
+  }
+  return shapes;
+}
+
+}  // namespace
+
+void ManagerCommand::add_to(CLI::App& app) {
+  sub = app.add_subcommand("manager", "seed 000's scene manager as a counted model: operation counts and capacity");
+  sub->add_flag("--capacity", capacity, "the largest No per frame for each Noc and Npl x Np, and the seed's claim");
+  sub->add_option("--clock", clock_mhz, "clock, MHz (default 100)");
+  sub->add_option("--rate", rate_hz, "frame rate, Hz (default 25)");
+  sub->add_option("--cost", cost_text,
+                  "cycles per operation by kind, e.g. R=4,L=2,D=8 (kinds R, C, O, L, A, M, D; default 1 each)");
+  sub->add_option("--occluded", occluded, "numbers of occluded objects Noc (default 0,20,60,100,200)")->delimiter(',');
+  sub->add_option("--planes", planes, "planes per object Npl (with --points: every pair; default 6,12,24,48)")
+      ->delimiter(',');
+  sub->add_option("--points", points, "points per plane Np (default 4)")->delimiter(',');
+  sub->add_option("--schedule", schedule,
+                  "sequence: a frame is the three units' sum (default); pipeline: each unit its own frame, the "
+                  "slowest one's")
+      ->check(CLI::IsMember({"sequence", "pipeline"}));
+  sub->add_option("--pairs", pairs,
+                  "sphere tests: neighbours in SP, the table's No - 1 (default); all: the pseudo-code's all pairs")
+      ->check(CLI::IsMember({"neighbours", "all"}));
+}
+
+int ManagerCommand::run() {
+  const CapacityQuestion q = capacity_question(*this);
+  const std::vector<Shape> shape_list = object_shapes(*this);
+  std::set<std::uint32_t> shape_points;
+  for (const Shape& s : shape_list) shape_points.insert(s.points);
+  print_assumptions(q);
+  int checked = 0;
+  print_capacity_table(q, occluded, shape_list,
+                       "counted model (the table's formulas but for the sorter's R, its L at Noc >= 2 and its C, A, M, "
+                       "D at Noc = 0)",
+                       checked);
+  CapacityQuestion table = q;
+  table.source = CountSource::kSeedTable;
+  table.pairs = PairTests::kNeighbours;
+  print_capacity_table(table, occluded, shape_list, "the seed's table as printed", checked);
+  std::cout << "(" << checked << " model entries re-counted by running the three units at No and No + 1)\n";
+  print_claim_loads(q, shape_list);
+  print_unit_cycles(q, shape_list);
+  print_verdicts(q, table, shape_list, shape_points);
   return 0;
 }
 

@@ -1,11 +1,17 @@
 // Images (8-bit RGB) and per-pixel polygon id buffers, with their file formats.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace cig {
+
+// A linear colour component in [0, 1] as an 8-bit code: clamped, times 255, rounded half away from
+// zero (std::lround): the output's and the colour tables' one conversion.
+inline std::uint8_t unit_to_byte(double unit) { return std::uint8_t(std::lround(std::clamp(unit, 0.0, 1.0) * 255.0)); }
 
 struct Image {
   int width = 0, height = 0;

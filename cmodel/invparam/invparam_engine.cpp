@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/timing.hpp"
 #include "hls/formatter/sample_lattice.hpp"
 #include "hls/invparam/visibility.hpp"
 #include "invparam/face_setup.hpp"
@@ -18,9 +18,6 @@
 namespace cig {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // A word's value: code 2^-(W - 8) (word.hpp), exact in long double up to 64 significant bits.
 template <int W>
@@ -177,7 +174,7 @@ RasterImage shade_and_resolve(const ScreenFrame& frame, const InvparamHits& h, i
           sum[2] += c.b;
         }
       std::uint8_t* dst = out.image.at(px, py);
-      for (int k = 0; k < 3; ++k) dst[k] = std::uint8_t(std::lround(std::clamp(sum[k] / count, 0.0, 1.0) * 255.0));
+      for (int k = 0; k < 3; ++k) dst[k] = unit_to_byte(sum[k] / count);
       out.ids.id[std::size_t(py) * std::size_t(n) + std::size_t(px)] = majority_owner(owners.data(), count);
     }
   return out;

@@ -27,6 +27,12 @@ struct PlaneDoubleArith {
     double start = 1e30, end = 2e30;
   };
 
+  // The box filter's output: the mean of the 4^side_log2 samples' 8-bit values, rounded (half away
+  // from zero) and clamped to 255 (the twins' resolve; the fixed kernels' is hls/pixel/).
+  static hls::UInt<8> box_mean(double sum, int side_log2) {
+    return hls::UInt<8>(int(std::lround(std::clamp(std::ldexp(sum, -2 * side_log2), 0.0, 255.0))));
+  }
+
   static Value intensity_value(double i) { return i; }
   static int depth_exponent(double) { return 0; }
   static int w_exponent(int) { return 0; }

@@ -334,66 +334,77 @@ class ArchModel {
     return true;
   }
 
+  // One clock of PE `index`: a busy PE evaluates its next child (pe_evaluate), an idle one (or one
+  // that has just finished its window) loads the next window (pe_load).
   void step_pe(int index, long long t, const hls::MaskMemory& masks, ArchStats& st, ArchTracer<P>* tracer) {
+    if (pes_[std::size_t(index)].busy && !pe_evaluate(index, t, st, tracer)) return;
+    pe_load(index, t, masks, st, tracer);
+  }
+
+  // A busy PE's clock: its next child tested and passed on (or the stall kept); true when the
+  // window's last child is done and the PE may load in this clock.
+  bool pe_evaluate(int index, long long t, ArchStats& st, ArchTracer<P>* tracer) {
     Pe& pe = pes_[std::size_t(index)];
-    bool can_load = !pe.busy;
-    if (pe.busy) {
-      Work& w = *pe.work;
-      if (w.stalled_on >= 0 && fifos_[std::size_t(w.stalled_on)].start_count() >= cfg_.fifo_depth) {
-        ++st.pe_stall_cycles[std::size_t(index)];
-        return;  // still stalled: the same kept child, its output still full (model speed only)
-      }
-      const bool kept = w.stalled_on >= 0;  // w.child is this child's evaluation
-      w.stalled_on = -1;
-      const QuadItem<P>& held = pool_[std::size_t(w.slot)];
-      int q = 0;
-      while (((pe.todo >> q) & 1u) == 0) ++q;
-      const int level = int(held.w.level.value()) + 1;
-      const bool to_lifo = level < pe.last_level;
-      const int dest = pe.out_base + (pe.out_by_quadrant ? q : 0);
-      const bool room = to_lifo || fifos_[std::size_t(dest)].start_count() < cfg_.fifo_depth;
-      if (!kept) hls::evaluate_child(held.w, q, n_, false, w.child, cfg_.side_log2);
-      const hls::QuadChild<P>& child = w.child;
-      if (child.covered) {
-        if (!room) {
-          ++st.pe_stall_cycles[std::size_t(index)];
-          w.stalled_on = dest;
-          return;  // stall: the same child again next cycle
-        }
-        const int slot = allocate();
-        QuadItem<P>& it = pool_[std::size_t(slot)];
-        const QuadItem<P>& parent = pool_[std::size_t(w.slot)];  // the pool may have grown
-        it.w = child.window;
-        it.samples = child.samples;
-        it.piece = parent.piece;
-        if (to_lifo) {
-          w.lifo.push_back(slot);
-          ++in_flight_;
-        } else {
-          push(dest, slot);
-        }
-        ++st.level[std::size_t(level)].covered;
-        PieceStats& ps = st.pieces[it.piece];
-        ps.deepest_level = std::max(ps.deepest_level, level);
-        if (tracer) tracer->emit(t, index, q, it, child.full);
-      }
-      ++st.level[std::size_t(level)].tested;
-      ++st.pe_busy_cycles[std::size_t(index)];
-      const QuadItem<P>& parent = pool_[std::size_t(w.slot)];
-      if (child.full && parent.w.poly.opaque) {
-        ++st.level[std::size_t(level)].full_opaque;
-        if (cfg_.masks) sets_.push_back({level - 1, int(parent.w.x.value()), int(parent.w.y.value()), q});
-      }
-      pe.todo &= ~(1u << q);
-      if (pe.todo == 0) {
-        pe.busy = false;
-        release(w.slot);
-        w.slot = -1;
-        --in_flight_;
-        can_load = true;
-      }
+    Work& w = *pe.work;
+    if (w.stalled_on >= 0 && fifos_[std::size_t(w.stalled_on)].start_count() >= cfg_.fifo_depth) {
+      ++st.pe_stall_cycles[std::size_t(index)];
+      return false;  // still stalled: the same kept child, its output still full (model speed only)
     }
-    if (!can_load) return;
+    const bool kept = w.stalled_on >= 0;  // w.child is this child's evaluation
+    w.stalled_on = -1;
+    const QuadItem<P>& held = pool_[std::size_t(w.slot)];
+    int q = 0;
+    while (((pe.todo >> q) & 1u) == 0) ++q;
+    const int level = int(held.w.level.value()) + 1;
+    const bool to_lifo = level < pe.last_level;
+    const int dest = pe.out_base + (pe.out_by_quadrant ? q : 0);
+    const bool room = to_lifo || fifos_[std::size_t(dest)].start_count() < cfg_.fifo_depth;
+    if (!kept) hls::evaluate_child(held.w, q, n_, false, w.child, cfg_.side_log2);
+    const hls::QuadChild<P>& child = w.child;
+    if (child.covered) {
+      if (!room) {
+        ++st.pe_stall_cycles[std::size_t(index)];
+        w.stalled_on = dest;
+        return false;  // stall: the same child again next cycle
+      }
+      const int slot = allocate();
+      QuadItem<P>& it = pool_[std::size_t(slot)];
+      const QuadItem<P>& parent = pool_[std::size_t(w.slot)];  // the pool may have grown
+      it.w = child.window;
+      it.samples = child.samples;
+      it.piece = parent.piece;
+      if (to_lifo) {
+        w.lifo.push_back(slot);
+        ++in_flight_;
+      } else {
+        push(dest, slot);
+      }
+      ++st.level[std::size_t(level)].covered;
+      PieceStats& ps = st.pieces[it.piece];
+      ps.deepest_level = std::max(ps.deepest_level, level);
+      if (tracer) tracer->emit(t, index, q, it, child.full);
+    }
+    ++st.level[std::size_t(level)].tested;
+    ++st.pe_busy_cycles[std::size_t(index)];
+    const QuadItem<P>& parent = pool_[std::size_t(w.slot)];
+    if (child.full && parent.w.poly.opaque) {
+      ++st.level[std::size_t(level)].full_opaque;
+      if (cfg_.masks) sets_.push_back({level - 1, int(parent.w.x.value()), int(parent.w.y.value()), q});
+    }
+    pe.todo &= ~(1u << q);
+    if (pe.todo == 0) {
+      pe.busy = false;
+      release(w.slot);
+      w.slot = -1;
+      --in_flight_;
+      return true;
+    }
+    return false;
+  }
+
+  // An idle PE's clock: the next window from its LIFO or its input FIFO, masked children dropped.
+  void pe_load(int index, long long t, const hls::MaskMemory& masks, ArchStats& st, ArchTracer<P>* tracer) {
+    Pe& pe = pes_[std::size_t(index)];
     int slot = -1;
     if (pe.work && !pe.work->lifo.empty()) {
       slot = pe.work->lifo.back();

@@ -19,9 +19,7 @@ struct QuadDoubleArith : PlaneDoubleArith {
   using Accum = double;
   static Param step(double f, double g, int k) { return f + std::ldexp(g, k); }
   static Accum accumulate(double a, double s) { return a + s; }
-  static hls::UInt<8> resolve(double sum, int side_log2) {
-    return hls::UInt<8>(int(std::lround(std::clamp(std::ldexp(sum, -2 * side_log2), 0.0, 255.0))));
-  }
+  static hls::UInt<8> resolve(double sum, int side_log2) { return box_mean(sum, side_log2); }
 };
 
 }  // namespace cig

@@ -174,8 +174,8 @@ class PixelFrame final : public PixelSink<P> {
       fog_end_ = frame.fog.end;
     }
     for (int c = 0; c < 3; ++c) {
-      tables_->fog_colour[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.fog.colour[c], 0.0, 1.0) * 255)));
-      tables_->background[c] = hls::UInt<8>(int(std::lround(std::clamp(frame.background[c], 0.0, 1.0) * 255)));
+      tables_->fog_colour[c] = hls::UInt<8>(unit_to_byte(frame.fog.colour[c]));
+      tables_->background[c] = hls::UInt<8>(unit_to_byte(frame.background[c]));
     }
     const std::size_t pixels = std::size_t(n_) * std::size_t(n_);
     if (states_.size() != pixels || owners_.size() != pixels * std::size_t(spp_)) {

@@ -120,9 +120,7 @@ struct DoubleSegmentArith {
   // The same mean fed a sample at a time, in the same order.
   using BoxAccum = double;
   static double box_add(double sum, double s) { return sum + s; }
-  static hls::UInt<8> resolve_sum(double sum, int side_log2) {
-    return hls::UInt<8>(int(std::lround(std::clamp(std::ldexp(sum, -2 * side_log2), 0.0, 255.0))));
-  }
+  static hls::UInt<8> resolve_sum(double sum, int side_log2) { return PlaneDoubleArith::box_mean(sum, side_log2); }
   static int first_column_at_or_after(const LatticeGeometry& g, double x) {
     return int(std::ceil((2 * x - g.offset_half) / std::ldexp(1.0, g.log2_half_spacing)));
   }

@@ -57,9 +57,7 @@ struct Front<hls::FixedSegmentArith<Fmt>> {
                             hls::Segment<P> (&out)[hls::kMaxLightSegments]) {
     return hls::generate_light_segments<P>(l, log2, hls::UInt<3>(0), out, side_log2);
   }
-  static typename P::Level level(double unit) {
-    return hls::UInt<8>(int(std::lround(std::clamp(unit, 0.0, 1.0) * 255)));
-  }
+  static typename P::Level level(double unit) { return hls::UInt<8>(unit_to_byte(unit)); }
   static void fog_table(typename P::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, false); }
   // Perspective-correct mode: the table indexed by the e8m7 code of 1/Z.
   static void fog_inverse_table(typename P::Plane::FogTable& t, const Fog& fog) { fill_fog_table(t, fog, true); }

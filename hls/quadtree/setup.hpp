@@ -112,6 +112,84 @@ inline void box_samples(int h0, int h1, const LatticeGeometry& g, int& k0, int& 
   k1 = floor_shift(h1 - g.offset_half, g.log2_half_spacing);
 }
 
+// Bounding-box edges: left, right, top, bottom, each unless a polygon edge already lies on that
+// side of the box (an axis-aligned edge at the extreme), appended after the piece's `used` edges;
+// returns how many were added. extreme: the box (hx min, hx max, hy min, hy max).
+template <class P>
+int add_box_edges(const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices], const int (&idx)[kQuadMaxEdges], int m,
+                  const LatticeGeometry& g, int& used, int (&extreme)[4], QuadWindow<P>& root) {
+  const int ls = g.log2_half_spacing;
+  const int o = g.offset_half;
+  for (int k = 0; k < 4; ++k) extreme[k] = k < 2 ? hx[idx[0]] : hy[idx[0]];
+  for (int k = 1; k < kQuadMaxEdges; ++k) {
+    if (k >= m) break;
+    if (hx[idx[k]] < extreme[0]) extreme[0] = hx[idx[k]];
+    if (hx[idx[k]] > extreme[1]) extreme[1] = hx[idx[k]];
+    if (hy[idx[k]] < extreme[2]) extreme[2] = hy[idx[k]];
+    if (hy[idx[k]] > extreme[3]) extreme[3] = hy[idx[k]];
+  }
+  bool on_side[4] = {false, false, false, false};
+  for (int k = 0; k < kQuadMaxEdges; ++k) {
+    if (k >= m) break;
+    const int a = idx[k], b = idx[k + 1 == m ? 0 : k + 1];
+    if (hx[a] == hx[b] && hx[a] == extreme[0]) on_side[0] = true;
+    if (hx[a] == hx[b] && hx[a] == extreme[1]) on_side[1] = true;
+    if (hy[a] == hy[b] && hy[a] == extreme[2]) on_side[2] = true;
+    if (hy[a] == hy[b] && hy[a] == extreme[3]) on_side[3] = true;
+  }
+  int added = 0;
+  for (int side = 0; side < 4; ++side) {
+    if (used >= kQuadMaxEdges) break;
+    if (on_side[side]) continue;  // the polygon's own edge is that side of the box
+    const int t = extreme[side] - o;
+    int av = 0, bv = 0, cv = 0;
+    if (side == 0) {
+      av = 1;
+      cv = -ceil_shift(t, ls);
+    }  // i >= ceil((hx_min - o) / s)
+    else if (side == 1) {
+      av = -1;
+      cv = floor_shift(t, ls);
+    }  // i <= floor((hx_max - o) / s)
+    else if (side == 2) {
+      bv = 1;
+      cv = -ceil_shift(t, ls);
+    } else {
+      bv = -1;
+      cv = floor_shift(t, ls);
+    }
+    root.poly.a[used] = EdgeGradient(av);
+    root.poly.b[used] = EdgeGradient(bv);
+    root.d[used] = root_coverage(root.poly.a[used], root.poly.b[used], Int<29>(cv), g);
+    ++used;
+    ++added;
+  }
+  return added;
+}
+
+// Parameter planes (Newell, hls/pixel/attribute_planes.hpp): the piece's gradients and the root
+// window's values.
+template <class P>
+void set_piece_planes(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices],
+                      const int (&idx)[kQuadMaxEdges], int m, const Int<34>& nz, const LatticeGeometry& g, int e_min,
+                      QuadWindow<P>& root) {
+  QuadPolygon<P>& poly = root.poly;
+  typename P::VertexI vi[kMaxVertices];
+  typename P::VertexZ vz[kMaxVertices];
+  for (int k = 0; k < kMaxVertices; ++k) {
+    vi[k] = in.v[k].i;
+    vz[k] = in.v[k].z;
+  }
+  AttributePlanes<P> planes;
+  fit_attribute_planes<P>(vi, vz, hx, hy, idx, m, nz, g.raster_log2, e_min, planes, g.side_log2);
+  for (int p = 0; p < kQuadParams; ++p) {
+    poly.dp_di[p] = planes.d[p];
+    poly.dp_dj[p] = planes.e[p];
+    root.f[p] = planes.f[p];
+  }
+  poly.w_exponent = planes.w_exponent;
+}
+
 // One convex piece: vertices idx[0..m) of the input (half units hx, hy given).
 template <class P>
 void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices], const int (&hy)[kMaxVertices],
@@ -151,74 +229,15 @@ void setup_piece(const QuadPrimitiveInput<P>& in, const int (&hx)[kMaxVertices],
     root.d[k] = root_coverage(poly.a[k], poly.b[k], c, g);
   }
 
-  // Bounding-box edges: left, right, top, bottom, each unless a polygon edge already lies on that
-  // side of the box (an axis-aligned edge at the extreme).
-  int extreme[4] = {hx[idx[0]], hx[idx[0]], hy[idx[0]], hy[idx[0]]};
-  for (int k = 1; k < kQuadMaxEdges; ++k) {
-    if (k >= m) break;
-    if (hx[idx[k]] < extreme[0]) extreme[0] = hx[idx[k]];
-    if (hx[idx[k]] > extreme[1]) extreme[1] = hx[idx[k]];
-    if (hy[idx[k]] < extreme[2]) extreme[2] = hy[idx[k]];
-    if (hy[idx[k]] > extreme[3]) extreme[3] = hy[idx[k]];
-  }
-  bool on_side[4] = {false, false, false, false};
-  for (int k = 0; k < kQuadMaxEdges; ++k) {
-    if (k >= m) break;
-    const int a = idx[k], b = idx[k + 1 == m ? 0 : k + 1];
-    if (hx[a] == hx[b] && hx[a] == extreme[0]) on_side[0] = true;
-    if (hx[a] == hx[b] && hx[a] == extreme[1]) on_side[1] = true;
-    if (hy[a] == hy[b] && hy[a] == extreme[2]) on_side[2] = true;
-    if (hy[a] == hy[b] && hy[a] == extreme[3]) on_side[3] = true;
-  }
-  int added = 0;
-  for (int side = 0; side < 4; ++side) {
-    if (used >= kQuadMaxEdges) break;
-    if (on_side[side]) continue;  // the polygon's own edge is that side of the box
-    const int t = extreme[side] - o;
-    int av = 0, bv = 0, cv = 0;
-    if (side == 0) {
-      av = 1;
-      cv = -ceil_shift(t, ls);
-    }  // i >= ceil((hx_min - o) / s)
-    else if (side == 1) {
-      av = -1;
-      cv = floor_shift(t, ls);
-    }  // i <= floor((hx_max - o) / s)
-    else if (side == 2) {
-      bv = 1;
-      cv = -ceil_shift(t, ls);
-    } else {
-      bv = -1;
-      cv = floor_shift(t, ls);
-    }
-    poly.a[used] = EdgeGradient(av);
-    poly.b[used] = EdgeGradient(bv);
-    root.d[used] = root_coverage(poly.a[used], poly.b[used], Int<29>(cv), g);
-    ++used;
-    ++added;
-  }
+  int extreme[4];  // the box: hx min, hx max, hy min, hy max
+  bbox_added = UInt<3>(add_box_edges<P>(hx, hy, idx, m, g, used, extreme, root));
   poly.edge_count = UInt<4>(used);
-  bbox_added = UInt<3>(added);
   int i0, i1, j0, j1;
   box_samples(extreme[0], extreme[1], g, i0, i1);
   box_samples(extreme[2], extreme[3], g, j0, j1);
   set_start_window(i0, i1, j0, j1, g, poly);
 
-  // Parameter planes (Newell, hls/pixel/attribute_planes.hpp).
-  typename P::VertexI vi[kMaxVertices];
-  typename P::VertexZ vz[kMaxVertices];
-  for (int k = 0; k < kMaxVertices; ++k) {
-    vi[k] = in.v[k].i;
-    vz[k] = in.v[k].z;
-  }
-  AttributePlanes<P> planes;
-  fit_attribute_planes<P>(vi, vz, hx, hy, idx, m, nz, g.raster_log2, e_min, planes, g.side_log2);
-  for (int p = 0; p < kQuadParams; ++p) {
-    poly.dp_di[p] = planes.d[p];
-    poly.dp_dj[p] = planes.e[p];
-    root.f[p] = planes.f[p];
-  }
-  poly.w_exponent = planes.w_exponent;
+  set_piece_planes<P>(in, hx, hy, idx, m, nz, g, e_min, root);
 }
 
 }  // namespace quad_detail
