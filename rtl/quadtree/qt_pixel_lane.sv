@@ -17,19 +17,19 @@ module qt_pixel_lane #(
   parameter int GW = qt_pkg::GW_DEFAULT,
   parameter int G = qt_pkg::G_DEFAULT
 ) (
-  input  logic [3:0]    sample_i,          // 4 dj + di
+  input  logic [qt_pkg::SAMPLE_INDEX_W-1:0] sample_i,   // 4 dj + di
   input  logic [PW-1:0] f_intensity_i,     // f[0] at the pixel's top-left sample
   input  logic [PW-1:0] f_depth_i,         // f[1]
   input  logic [GW-1:0] di_intensity_i,    // dp_di[0]
   input  logic [GW-1:0] dj_intensity_i,    // dp_dj[0]
   input  logic [GW-1:0] di_depth_i,        // dp_di[1]
   input  logic [GW-1:0] dj_depth_i,        // dp_dj[1]
-  input  logic [9:0]    w_exponent_i,
-  input  logic [23:0]   colour_i,          // R in bits 7:0
-  input  logic [23:0]   fog_colour_i,
-  output logic [14:0]   code_o,            // e8m7 code of 1/Z: the fog table's address
-  input  logic [8:0]    fog_factor_i,      // the fog table's entry at code_o
-  output logic [47:0]   colour_o           // three 16-bit samples (8 fractional bits), R first
+  input  logic [qt_pkg::W_EXPONENT_W-1:0] w_exponent_i,
+  input  logic [qt_pkg::COLOUR_BITS-1:0] colour_i,      // R in the low COLOUR_W bits
+  input  logic [qt_pkg::COLOUR_BITS-1:0] fog_colour_i,
+  output logic [qt_pkg::FOG_CODE_W-1:0] code_o,         // e8m7 code of 1/Z: the fog table's address
+  input  logic [qt_pkg::FOG_FACTOR_W-1:0] fog_factor_i, // the fog table's entry at code_o
+  output logic [qt_pkg::COLOURS*qt_pkg::SAMPLE_COLOUR_W-1:0] colour_o  // three samples, R first
 );
 
   localparam int IW = 9 + G;   // intensity: 9 integer (0..256), G fractional bits
@@ -70,33 +70,44 @@ module qt_pixel_lane #(
   );
 
   // ---- Colour x I, then fog ------------------------------------------------------------------------
-  logic signed [10:0] keep;   // 256 - f9
-  assign keep = 11'sd256 - 11'($signed({2'b00, fog_factor_i}));
+  // Widths of hls/pixel/sample_colour.hpp's fog mix: f9 scales by 2^MixShift (256 = all fog), so
+  // 256 - f9 needs FOG_FACTOR_W + 1 bits and a sign; shade (256 - f9) is SW + 1 by KeepW bits signed;
+  // adding fog f9 2^MixShift and the rounding half needs two more bits; >>> MixShift leaves the rest.
+  localparam int CW = qt_pkg::COLOUR_W;
+  localparam int SW = qt_pkg::SAMPLE_COLOUR_W;
+  localparam int MixShift = qt_pkg::FOG_FACTOR_W - 1;       // 8
+  localparam int KeepW = qt_pkg::FOG_FACTOR_W + 2;          // 11
+  localparam int FogTermW = CW + qt_pkg::FOG_FACTOR_W;      // 17
+  localparam int KeptW = SW + 1 + KeepW;                    // 28
+  localparam int MixW = KeptW + 2;                          // 30
+  localparam int RoundedW = MixW - MixShift;                // 22
+  logic signed [KeepW-1:0] keep;   // 256 - f9
+  assign keep = KeepW'(1 << MixShift) - KeepW'($signed({2'b00, fog_factor_i}));
 
-  for (genvar c = 0; c < 3; c++) begin : g_channel
-    logic [IW+8:0]      lit;        // colour x I + half an LSB of the 8-fraction-bit result
-    logic [IW+8-G:0]    shade_wide;
-    logic [15:0]        shade;
-    logic signed [29:0] mixed;      // shade (256 - f9) + fog f9 2^8, 16 fractional bits
-    logic signed [21:0] rounded;
-    logic [16:0]        fog_term;   // fog f9, 8 fractional bits
-    logic [IW+7:0]      product;    // colour x I: 8 x IW bits
-    assign product = colour_i[c*8 +: 8] * intensity;
-    assign lit = (IW+9)'(product) + (IW+9)'(1 << (G - 1));
-    assign shade_wide = (IW+9-G)'(lit >> G);   // the G dropped bits: rounded half up above
-    assign shade = (|shade_wide[IW+8-G:16]) ? 16'hFFFF : shade_wide[15:0];
-    logic signed [27:0] kept;       // shade (256 - f9): 17 x 11 bits signed
-    assign fog_term = fog_colour_i[c*8 +: 8] * fog_factor_i;
+  for (genvar c = 0; c < qt_pkg::COLOURS; c++) begin : g_channel
+    logic [IW+CW:0]          lit;        // colour x I + half an LSB of the 8-fraction-bit result
+    logic [IW+CW-G:0]        shade_wide;
+    logic [SW-1:0]           shade;
+    logic signed [MixW-1:0]  mixed;      // shade (256 - f9) + fog f9 2^8, 16 fractional bits
+    logic signed [RoundedW-1:0] rounded;
+    logic [FogTermW-1:0]     fog_term;   // fog f9, 8 fractional bits
+    logic [IW+CW-1:0]        product;    // colour x I: CW x IW bits
+    assign product = colour_i[c*CW +: CW] * intensity;
+    assign lit = (IW+CW+1)'(product) + (IW+CW+1)'(1 << (G - 1));
+    assign shade_wide = (IW+CW+1-G)'(lit >> G);   // the G dropped bits: rounded half up above
+    assign shade = (|shade_wide[IW+CW-G:SW]) ? '1 : shade_wide[SW-1:0];
+    logic signed [KeptW-1:0] kept;       // shade (256 - f9): SW + 1 x KeepW bits signed
+    assign fog_term = fog_colour_i[c*CW +: CW] * fog_factor_i;
     assign kept = $signed({1'b0, shade}) * keep;
-    assign mixed = 30'(kept) + 30'({fog_term, 8'd0});
-    assign rounded = 22'((mixed + 30'sd128) >>> 8);
+    assign mixed = MixW'(kept) + MixW'({fog_term, {MixShift{1'b0}}});
+    assign rounded = RoundedW'((mixed + MixW'(1 << (MixShift - 1))) >>> MixShift);
     always_comb begin
       if (rounded < 0) begin
-        colour_o[c*16 +: 16] = 16'h0000;
-      end else if (rounded > 22'sd65535) begin
-        colour_o[c*16 +: 16] = 16'hFFFF;
+        colour_o[c*SW +: SW] = '0;
+      end else if (rounded > RoundedW'((1 << SW) - 1)) begin
+        colour_o[c*SW +: SW] = '1;
       end else begin
-        colour_o[c*16 +: 16] = rounded[15:0];
+        colour_o[c*SW +: SW] = rounded[SW-1:0];
       end
     end
   end

@@ -76,7 +76,7 @@ module qt_pixel_processor #(
   localparam int FOG_ENTRIES = 1 << FOG_CODE_BITS;
 
   // ---- Tables -------------------------------------------------------------------------------------
-  logic [8:0]     fog_q [FOG_ENTRIES];
+  logic [qt_pkg::FOG_FACTOR_W-1:0] fog_q [FOG_ENTRIES];
   logic [23:0]    fog_colour_q, background_q;
   logic [LIW-1:0] light_q [PIXELS];
   logic [15:0]    cover_mask_q [LIGHT_COVERS];
@@ -177,16 +177,16 @@ module qt_pixel_processor #(
   // ---- 16 sample lanes ----------------------------------------------------------------------------
   logic [47:0] sample_colour [16];
   for (genvar s = 0; s < 16; s++) begin : g_lane
-    logic [14:0] code;
-    logic [8:0]  fog_factor;
-    logic [47:0] lane_colour;
+    logic [qt_pkg::FOG_CODE_W-1:0] code;
+    logic [qt_pkg::FOG_FACTOR_W-1:0] fog_factor;
+    logic [qt_pkg::COLOURS*qt_pkg::SAMPLE_COLOUR_W-1:0] lane_colour;
     logic [64:0] cover_entry;
     logic        light_shows;
 
     qt_pixel_lane #(
       .PW(PW), .GW(GW), .G(G)
     ) u_lane (
-      .sample_i       (4'(s)),
+      .sample_i       (qt_pkg::SAMPLE_INDEX_W'(s)),
       .f_intensity_i  (rec_f[0 +: PW]),
       .f_depth_i      (rec_f[PW +: PW]),
       .di_intensity_i (rec_dp_di[0 +: GW]),
@@ -200,16 +200,16 @@ module qt_pixel_processor #(
       .fog_factor_i   (fog_factor),
       .colour_o       (lane_colour)
     );
-    assign fog_factor = fog_q[code[14 -: FOG_CODE_BITS]];
+    assign fog_factor = fog_q[code[qt_pkg::FOG_CODE_W-1 -: FOG_CODE_BITS]];
 
     // The light shows when it covers the sample and ranks at or before the polygon.
-    assign cover_entry = cover_sample_q[{rec_entry, 4'(s)}];
+    assign cover_entry = cover_sample_q[{rec_entry, qt_pkg::SAMPLE_INDEX_W'(s)}];
     assign light_shows = rec_cover_mask[s] && (cover_entry[64:48] <= {1'b0, rec_id});
     // {R, G, B} of the cover entry -> R first like the lanes.
     assign sample_colour[s] = light_shows ? {cover_entry[15:0], cover_entry[31:16], cover_entry[47:32]} : lane_colour;
     if (FOG_CODE_BITS < 15) begin : g_fog_low_bits
       logic unused_code_low;
-      assign unused_code_low = ^code[14 - FOG_CODE_BITS:0];
+      assign unused_code_low = ^code[qt_pkg::FOG_CODE_W-1 - FOG_CODE_BITS:0];
     end
   end
 
@@ -256,7 +256,7 @@ module qt_pixel_processor #(
   always_ff @(posedge clk_i) begin
     if (cfg_valid_i) begin
       unique case (cfg_target_i)
-        3'd0: fog_q[cfg_addr_i[14 -: FOG_CODE_BITS]] <= cfg_data_i[8:0];
+        3'd0: fog_q[cfg_addr_i[qt_pkg::FOG_CODE_W-1 -: FOG_CODE_BITS]] <= cfg_data_i[qt_pkg::FOG_FACTOR_W-1:0];
         3'd1: begin
           unique case (cfg_addr_i)
             32'd0: fog_colour_q[7:0] <= cfg_data_i[7:0];
@@ -314,7 +314,7 @@ module qt_pixel_processor #(
         for (int c = 0; c < 3; c++) begin
           if (rd_cover_mask[s]) begin
             rd_total[c*20 +: 20] = rd_total[c*20 +: 20] +
-                                   20'(cover_sample_q[{rd_entry, 4'(s)}][32 - 16 * c +: 16]);
+                                   20'(cover_sample_q[{rd_entry, qt_pkg::SAMPLE_INDEX_W'(s)}][32 - 16 * c +: 16]);
           end else begin
             rd_total[c*20 +: 20] = rd_total[c*20 +: 20] + 20'({background_q[c*8 +: 8], 8'd0});
           end

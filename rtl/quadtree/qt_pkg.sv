@@ -49,6 +49,9 @@ package qt_pkg;
   localparam int EDGE_COUNT_W = 4;
   localparam int W_EXPONENT_W = 10;
   localparam int SAMPLES_W = 16;              // the pixel record's sample mask, bit 4 dj + di
+  localparam int SAMPLE_INDEX_W = 4;          // a sample's number 4 dj + di within its pixel
+  localparam int FOG_FACTOR_W = 9;            // a fog table entry f9: 0..256 (256 = all fog)
+  localparam int SAMPLE_COLOUR_W = 16;        // a sample's colour channel, 8 fractional bits
   localparam int CHILD_W = 2;                 // child number q = 2 y_b + x_b
 
   // ---- Record fields, packed LSB first in this order --------------------------------------------
