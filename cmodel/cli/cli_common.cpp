@@ -76,7 +76,7 @@ EngineOptions EngineArgs::options() const {
       const auto it = shorthands.find(spec.shorthand);
       if (!spec.shorthand.empty() && it != shorthands.end() && !it->second.empty()) o.params[spec.key] = it->second;
     }
-  make_engine(engine, o);  // validates the name and the options before any work
+  check_engine_options(engine, o);  // the name and the options before any work, from the engine's table
   return o;
 }
 

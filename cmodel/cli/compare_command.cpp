@@ -79,12 +79,12 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
   auto worker = [&] {
     try {
       auto eng = make_engine(c.engine.engine, eo);
-      auto ref = make_engine("float", ro);
+      auto ref = make_engine(reference_engine_name(), ro);
       // The same reference with visibility by priority, to attribute the error that comes from
       // the engines' visibility by list order (only for a z-buffered reference).
       EngineOptions po = ro;
       po.params["visibility"] = "priority";
-      auto priority_ref = make_engine("float", po);
+      auto priority_ref = make_engine(reference_engine_name(), po);
       for (std::size_t k; (k = next++) < jobs.size();) {
         const ScreenFrame f = jobs.screen_frame(k);
         const EngineRun got = eng->render(f);

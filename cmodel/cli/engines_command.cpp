@@ -21,10 +21,10 @@ namespace {
 
 std::vector<std::string> draws(const EngineInfo& e) {
   std::vector<std::string> d;
-  if (e.polygons) d.push_back("polygons");
+  if (e.can.polygons) d.push_back("polygons");
   if (e.light_points) d.push_back("light points");
-  if (e.polyhedra) d.push_back("convex polyhedra (\"polyhedron\": true objects)");
-  if (e.pipelines) d.push_back("rendering pipelines (--pipelines)");
+  if (e.can.polyhedra) d.push_back("convex polyhedra (\"polyhedron\": true objects)");
+  if (e.can.pipelines) d.push_back("rendering pipelines (--pipelines)");
   return d;
 }
 
@@ -34,11 +34,14 @@ std::string default_text(const EngineOptionSpec& s) { return s.default_value.emp
 
 std::string engine_text(const EngineInfo& e) {
   std::ostringstream t;
-  t << e.name << " (" << (e.bit_accurate ? "bit-accurate" : "double") << "): " << e.models << "\n  draws: ";
+  t << e.name << " (" << (e.can.bit_accurate ? "bit-accurate" : "double") << "): " << e.models << "\n  draws: ";
   const std::vector<std::string> d = draws(e);
   for (std::size_t k = 0; k < d.size(); ++k) t << (k ? ", " : "") << d[k];
   t << "\n";
-  if (e.snap) t << "  --snap: snap vertex positions to the formatter grid first (exact depth planes kept)\n";
+  if (*e.can.twin_of) t << "  twin of: " << e.can.twin_of << " (the same kernels on double arithmetic)\n";
+  if (*e.can.hardware_model) t << "  hardware model: " << e.can.hardware_model << ", co-simulated against it by cig cosim\n";
+  if (e.can.reference) t << "  the reference: --reference " << e.name << ", " << e.name << "-snap, " << e.name << "-snap-priority\n";
+  if (e.can.reference) t << "  --snap: snap vertex positions to the formatter grid first (exact depth planes kept)\n";
   t << "  --engine-opt settings:" << (e.options.empty() ? " none" : "") << "\n";
   std::size_t width = 0;
   for (const EngineOptionSpec& s : e.options) width = std::max(width, s.key.size() + 1 + s.range().size());
@@ -62,12 +65,16 @@ nlohmann::ordered_json engine_json(const EngineInfo& e) {
   nlohmann::ordered_json j;
   j["name"] = e.name;
   j["models"] = e.models;
-  j["arithmetic"] = e.bit_accurate ? "bit-accurate" : "double";
-  j["draws"] = {{"polygons", e.polygons},
+  j["arithmetic"] = e.can.bit_accurate ? "bit-accurate" : "double";
+  j["draws"] = {{"polygons", e.can.polygons},
                 {"light_points", e.light_points},
-                {"polyhedra", e.polyhedra},
-                {"rendering_pipelines", e.pipelines}};
-  j["snap"] = e.snap;
+                {"polyhedra", e.can.polyhedra},
+                {"rendering_pipelines", e.can.pipelines}};
+  j["snap"] = e.can.reference;
+  j["reference"] = e.can.reference;
+  j["formatter"] = e.can.formatter;
+  j["twin_of"] = e.can.twin_of;
+  j["hardware_model"] = e.can.hardware_model;
   j["options"] = nlohmann::ordered_json::array();
   for (const EngineOptionSpec& s : e.options) {
     nlohmann::ordered_json o = {{"key", s.key}, {"values", s.range()}, {"default", s.default_value}, {"help", s.help}};

@@ -6,19 +6,22 @@
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "common/json_reader.hpp"
+#include "registry/engine_registry.hpp"
 #include "frame/input_kind.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cli {
 
 EngineOptions reference_options(const std::string& reference, int samples_per_pixel) {
-  // float: the ground truth; float-snap: vertices snapped to the formatter grid (the engines'
-  // coverage); float-snap-priority: that, with visibility by list order as the engines have it.
-  if (reference != "float" && reference != "float-snap" && reference != "float-snap-priority")
-    throw InputError("", "--reference", "'" + reference + "' is none of float, float-snap, float-snap-priority");
+  // R (the reference engine, `float`): the ground truth; R-snap: vertices snapped to the formatter
+  // grid (the engines' coverage); R-snap-priority: that, with visibility by list order as the
+  // engines have it.
+  const std::string r = reference_engine_name();
+  if (reference != r && reference != r + "-snap" && reference != r + "-snap-priority")
+    throw InputError("", "--reference", "'" + reference + "' is none of " + r + ", " + r + "-snap, " + r + "-snap-priority");
   EngineOptions o;
-  o.snap = reference != "float";
-  if (reference == "float-snap-priority") o.params["visibility"] = "priority";
+  o.snap = reference != r;
+  if (reference == r + "-snap-priority") o.params["visibility"] = "priority";
   if (samples_per_pixel != 16) o.params["spp"] = std::to_string(samples_per_pixel);
   return o;
 }

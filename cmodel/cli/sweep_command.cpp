@@ -142,7 +142,7 @@ std::vector<SweepRow> measure(const FrameJobs& jobs, const std::vector<Combinati
                               std::vector<std::unique_ptr<RasterEngine>>& engines, int repeat) {
   std::vector<SweepRow> rows(combos.size());
   for (std::size_t v = 0; v < rows.size(); ++v) rows[v].label = combos[v].label;
-  auto ref = make_engine("float", ro);
+  auto ref = make_engine(reference_engine_name(), ro);
   Progress progress("cig sweep", (long long)(jobs.size() * rows.size()));
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const ScreenFrame f = jobs.screen_frame(k);

@@ -223,7 +223,7 @@ long polygons_not_drawn(const ScreenFrame& frame) {
 
 class InvparamEngine : public RasterEngine {
  public:
-  InvparamEngine(const EngineOptions& o, bool twin) : twin_(twin), name_(twin ? "invparam-double" : "invparam") {
+  InvparamEngine(const EngineOptions& o, bool twin) : twin_(twin), name_(invparam_engine_declaration(twin).name) {
     const EngineSettings s = parse_engine_options(name_, invparam_engine_options(twin), o.params);
     if (!twin) bits_ = s.integer("bits");
     side_log2_ = s.side_log2();
@@ -357,6 +357,26 @@ const std::vector<DropKind>& invparam_drop_kinds() {
 
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin) {
   return std::make_unique<InvparamEngine>(options, twin);
+}
+
+// Both engines' rows of `cig engines` (engine/engine_declaration.hpp).
+const EngineDeclaration& invparam_engine_declaration(bool twin) {
+  EngineCapabilities fixed;
+  fixed.bit_accurate = fixed.polyhedra = true;
+  fixed.hardware_model = "rtl/invparam (ip_array)";
+  EngineCapabilities double_twin = fixed;
+  double_twin.bit_accurate = false;
+  double_twin.hardware_model = "";
+  double_twin.twin_of = "invparam";
+  static const EngineDeclaration kFixed{
+      "invparam", "stage F: seed 002's inverse-parameter visibility processor (1/t per sample, systolic array)", fixed,
+      [](const EngineOptions& o) { return make_invparam_engine(o, false); },
+      [] { return invparam_engine_options(false); }, invparam_drop_kinds};
+  static const EngineDeclaration kTwin{
+      "invparam-double", "stage F as `invparam`, on double arithmetic (the twin)", double_twin,
+      [](const EngineOptions& o) { return make_invparam_engine(o, true); },
+      [] { return invparam_engine_options(true); }, invparam_drop_kinds};
+  return twin ? kTwin : kFixed;
 }
 
 }  // namespace cig

@@ -23,7 +23,7 @@
 #include <memory>
 #include <vector>
 
-#include "engine/engine.hpp"
+#include "engine/engine_declaration.hpp"
 #include "invparam/face_setup.hpp"
 
 namespace cig {
@@ -35,6 +35,8 @@ constexpr int kMaxWordBits = 80;
 // one period of it).
 constexpr double kInvparamDefaultClockNs = 3.0;
 
+// `invparam` and (twin) `invparam-double`: the rows the registry lists (engine/engine_declaration.hpp).
+const EngineDeclaration& invparam_engine_declaration(bool twin);
 std::unique_ptr<RasterEngine> make_invparam_engine(const EngineOptions& options, bool twin);
 std::vector<EngineOptionSpec> invparam_engine_options(bool twin);  // the twin has no bits=
 const std::vector<DropKind>& invparam_drop_kinds();

@@ -24,7 +24,7 @@ struct QuadOptions {
   bool start_window = false;  // start=bbox: each piece's subdivision starts at its start window
   std::string format = "fine";
   int fifo = 2;
-  double clock_mhz = kQuadDefaultClockMhz;
+  double clock_ns = kQuadDefaultClockNs;
   int side_log2 = hls::kDefaultSideLog2;  // spp = 4^t samples per pixel
   int threads = 1;                        // workers for one image (PixelFrame::set_threads)
 };
@@ -186,7 +186,7 @@ class QuadPipeline {
     rep["pixels_full"] = st.pixels_full;
     rep["mask_sets"] = st.mask_sets;
     rep["mask_words_full"] = st.mask_words_full;
-    const double frame_ms = double(st.cycles) / (options_.clock_mhz * 1e3);
+    const double frame_ms = double(st.cycles) * options_.clock_ns * 1e-6;
     long long busy = 0;
     for (long long b : st.pe_busy_cycles) busy += b;
     nlohmann::ordered_json per_stage = nlohmann::ordered_json::array();
@@ -209,7 +209,7 @@ class QuadPipeline {
     rep["hardware_ms"] = frame_ms;  // the modelled hardware time of the frame (cig sweep)
     rep["cycles"] = {{"frame", st.cycles},
                      {"per_piece", pieces == 0 ? 0.0 : double(st.cycles) / double(pieces)},
-                     {"clock_mhz", options_.clock_mhz},
+                     {"clock_ns", options_.clock_ns},
                      {"frame_ms", frame_ms},
                      {"budget_ms", kFrameBudgetMs},
                      {"fits_budget", frame_ms <= kFrameBudgetMs},
@@ -287,13 +287,13 @@ std::vector<EngineOptionSpec> quadtree_engine_options(bool twin) {
     specs.push_back(choice_option("format", {"coarse", "medium", "fine"}, "fine",
                                   "the parameter formats, hls/quadtree/records.hpp"));
   specs.push_back(integer_option("fifo", 1, 64, "2", "FIFO depth between stages"));
-  specs.push_back(real_option("clock", 0, 1e6, kQuadDefaultClockMhz, "the clock in MHz the report converts cycles at"));
+  specs.push_back(real_option("clock-ns", 0, 1e6, kQuadDefaultClockNs, "the clock period in ns the report converts cycles at"));
   specs.push_back(samples_per_pixel_option(hls::kMaxSideLog2));
   return specs;
 }
 
 std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options, bool twin) {
-  const char* engine = twin ? "quadtree-double" : "quadtree";
+  const char* engine = quadtree_engine_declaration(twin).name;
   const EngineSettings s = parse_engine_options(engine, quadtree_engine_options(twin), options.params);
   QuadOptions o;
   o.threads = std::max(1, options.threads);
@@ -302,7 +302,7 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
   o.start_window = s.is("start", "bbox");
   if (!twin) o.format = s.text("format");
   o.fifo = s.integer("fifo");
-  o.clock_mhz = s.real("clock");
+  o.clock_ns = s.real("clock-ns");
   o.side_log2 = s.side_log2();
   if (twin) return std::make_unique<QuadEngine<QuadDoubleArith>>(o, engine, "double");
   if (o.format == "coarse")
@@ -312,6 +312,28 @@ std::unique_ptr<RasterEngine> make_quadtree_engine(const EngineOptions& options,
     return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatMedium>>>(o, engine,
                                                                                     hls::QuadFormatMedium::name);
   return std::make_unique<QuadEngine<hls::QuadFixedArith<hls::QuadFormatFine>>>(o, engine, hls::QuadFormatFine::name);
+}
+
+// Both engines' rows of `cig engines` (engine/engine_declaration.hpp).
+const EngineDeclaration& quadtree_engine_declaration(bool twin) {
+  EngineCapabilities fixed;
+  fixed.bit_accurate = fixed.polygons = fixed.pipelines = fixed.formatter = true;
+  fixed.hardware_model = "rtl/quadtree (qt_raster)";
+  EngineCapabilities double_twin = fixed;
+  double_twin.bit_accurate = false;
+  double_twin.hardware_model = "";
+  double_twin.twin_of = "quadtree";
+  static const EngineDeclaration kFixed{
+      "quadtree",
+      "stages C and E: the formatter and seed 004's recursive-subdivision raster processor, clock by clock through "
+      "its architecture",
+      fixed, [](const EngineOptions& o) { return make_quadtree_engine(o, false); },
+      [] { return quadtree_engine_options(false); }, no_drop_kinds};
+  static const EngineDeclaration kTwin{
+      "quadtree-double", "stages C and E as `quadtree`, its kernels on double arithmetic (the twin)", double_twin,
+      [](const EngineOptions& o) { return make_quadtree_engine(o, true); },
+      [] { return quadtree_engine_options(true); }, no_drop_kinds};
+  return twin ? kTwin : kFixed;
 }
 
 }  // namespace cig

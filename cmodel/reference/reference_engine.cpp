@@ -12,11 +12,11 @@ namespace {
 class FloatEngine : public RasterEngine {
  public:
   explicit FloatEngine(const EngineOptions& o) : options_(o) {
-    const EngineSettings s = parse_engine_options("float", reference_engine_options(), o.params);
+    const EngineSettings s = parse_engine_options(name(), reference_engine_options(), o.params);
     side_ = 1 << s.side_log2();
     visibility_ = s.is("visibility", "priority") ? Visibility::kPriority : Visibility::kDepth;
   }
-  const char* name() const override { return "float"; }
+  const char* name() const override { return reference_engine_declaration().name; }
 
  protected:
   // The grid the snapped reference rounds to: eq. 1's, or the one subpixel=B names (InputError
@@ -26,7 +26,7 @@ class FloatEngine : public RasterEngine {
     const int grid_bits = hls::raster_log2_of(raster) + options_.subpixel_bits;
     if (grid_bits > kMaxGridBits)
       throw InputError("", "--engine-opt",
-                       "engine 'float': subpixel=" + std::to_string(options_.subpixel_bits) + " at " +
+                       std::string("engine '") + name() + "': subpixel=" + std::to_string(options_.subpixel_bits) + " at " +
                            std::to_string(raster) + " lines needs a " + std::to_string(grid_bits) +
                            "-bit grid; the reference snaps to at most " + std::to_string(kMaxGridBits) + " bits");
     return grid_bits;
@@ -36,7 +36,7 @@ class FloatEngine : public RasterEngine {
     snap_grid_bits(frame.raster);
     if (frame.polygons.size() > kMaxReferencePolygons || frame.light_points.size() > kMaxReferencePolygons)
       throw InputError("", "polygons",
-                       "the float engine takes at most " + std::to_string(kMaxReferencePolygons) +
+                       std::string("the ") + name() + " engine takes at most " + std::to_string(kMaxReferencePolygons) +
                            " polygons and as many light points per channel; frame " + std::to_string(frame.frame) +
                            " channel " + std::to_string(frame.channel) + " has " +
                            std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()));
@@ -48,7 +48,7 @@ class FloatEngine : public RasterEngine {
     const int grid_bits = snap_grid_bits(frame.raster);
     if (options_.snap) run.out = render_reference_snapped(frame, st, visibility_, side_, options_.threads, grid_bits);
     else run.out = render_reference(frame, st, visibility_, side_, options_.threads);
-    run.report["engine"] = "float";
+    run.report["engine"] = name();
     run.report["snapped"] = options_.snap;
     if (options_.snap) run.report["grid_bits"] = grid_bits;
     run.report["visibility"] = visibility_ == Visibility::kPriority ? "priority" : "depth";
@@ -81,6 +81,15 @@ std::vector<EngineOptionSpec> reference_engine_options() {
 
 std::unique_ptr<RasterEngine> make_reference_engine(const EngineOptions& options) {
   return std::make_unique<FloatEngine>(options);
+}
+
+const EngineDeclaration& reference_engine_declaration() {
+  EngineCapabilities can;
+  can.polygons = can.reference = true;
+  static const EngineDeclaration kFloat{
+      "float", "the float reference (ground truth): a z-buffer on 1/Z, the seeds' Gouraud, fog and light points", can,
+      make_reference_engine, reference_engine_options, no_drop_kinds};
+  return kFloat;
 }
 
 }  // namespace cig

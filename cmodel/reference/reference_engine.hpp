@@ -8,10 +8,12 @@
 #include <memory>
 #include <vector>
 
-#include "engine/engine.hpp"
+#include "engine/engine_declaration.hpp"
 
 namespace cig {
 
+// `float`: the row the registry lists (engine/engine_declaration.hpp).
+const EngineDeclaration& reference_engine_declaration();
 std::unique_ptr<RasterEngine> make_reference_engine(const EngineOptions& options);
 // Its --engine-opt keys (engine_options.hpp): what make_reference_engine parses.
 std::vector<EngineOptionSpec> reference_engine_options();

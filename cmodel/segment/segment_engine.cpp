@@ -555,7 +555,7 @@ const std::vector<DropKind>& segment_drop_kinds() {
 }
 
 std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, bool twin) {
-  const char* engine = twin ? "segment-double" : "segment";
+  const char* engine = segment_engine_declaration(twin).name;
   const EngineSettings s = parse_engine_options(engine, segment_engine_options(twin), options.params);
   const std::string format = twin ? "double" : s.text("format");
   const bool quad = s.is("x-rows", "2"), seed_interp = s.is("interp", "seed");
@@ -573,6 +573,24 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
         engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2, options.threads);
   throw std::logic_error("segment format " + format + " has no table row");
+}
+
+// Both engines' rows of `cig engines` (engine/engine_declaration.hpp).
+const EngineDeclaration& segment_engine_declaration(bool twin) {
+  EngineCapabilities fixed;
+  fixed.bit_accurate = fixed.polygons = fixed.pipelines = fixed.formatter = true;
+  EngineCapabilities double_twin = fixed;
+  double_twin.bit_accurate = false;
+  double_twin.twin_of = "segment";
+  static const EngineDeclaration kFixed{
+      "segment", "stages C and D: the formatter (eq. 1) and seed 001's segment processor", fixed,
+      [](const EngineOptions& o) { return make_segment_engine(o, false); },
+      [] { return segment_engine_options(false); }, segment_drop_kinds};
+  static const EngineDeclaration kTwin{
+      "segment-double", "stages C and D as `segment`, its kernels on double arithmetic (the twin)", double_twin,
+      [](const EngineOptions& o) { return make_segment_engine(o, true); },
+      [] { return segment_engine_options(true); }, segment_drop_kinds};
+  return twin ? kTwin : kFixed;
 }
 
 }  // namespace cig

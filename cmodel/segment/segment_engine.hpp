@@ -8,9 +8,12 @@
 #include <memory>
 #include <vector>
 
-#include "engine/engine.hpp"
+#include "engine/engine_declaration.hpp"
 
 namespace cig {
+
+// `segment` and (twin) `segment-double`: the rows the registry lists (engine/engine_declaration.hpp).
+const EngineDeclaration& segment_engine_declaration(bool twin);
 
 // Options (--engine-opt): segment_engine_options() (the twin has no format=).
 std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, bool twin);

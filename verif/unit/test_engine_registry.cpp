@@ -28,7 +28,7 @@ using Kind = EngineOptionSpec::Kind;
 
 EngineOptions with(const EngineInfo& e, const std::string& key, const std::string& value) {
   EngineOptions o;
-  o.snap = e.snap;  // the float reference's subpixel= needs --snap
+  o.snap = e.can.reference;  // the float reference's subpixel= needs --snap
   o.params[key] = value;
   return o;
 }
@@ -88,12 +88,12 @@ TEST(EngineRegistry, RowsAgreeWithTheEngines) {
     SCOPED_TRACE(e.name);
     const auto engine = make_engine(e.name, {});
     EXPECT_EQ(engine->name(), e.name);
-    EXPECT_EQ(engine->renders_parts(), e.pipelines);
-    EXPECT_NE(e.polygons, e.polyhedra);  // stage F draws polyhedra, every other engine polygons
+    EXPECT_EQ(engine->renders_parts(), e.can.pipelines);
+    EXPECT_NE(e.can.polygons, e.can.polyhedra);  // stage F draws polyhedra, every other engine polygons
     ASSERT_EQ(engine->drop_kinds().size(), e.drops.size());
     EngineOptions snap;
     snap.snap = true;
-    if (e.snap) EXPECT_NO_THROW(make_engine(e.name, snap));
+    if (e.can.reference) EXPECT_NO_THROW(make_engine(e.name, snap));
     else EXPECT_THROW(make_engine(e.name, snap), InputError) << "--snap";
   }
   EXPECT_THROW(engine_info("nonesuch"), InputError);
@@ -134,9 +134,9 @@ TEST_F(MixedScene, EveryReportCarriesTheDroppedKeysItDocuments) {
       ASSERT_TRUE(co.report["raster"].contains("dropped"));
       EXPECT_EQ(keys_of(co.report["raster"]["dropped"]), documented(e));
     }
-    if (e.pipelines)
+    if (e.can.pipelines)
       EXPECT_EQ(keys_of(pipeline.render(0, {0}, e.name, {}, 1, 2)[0].report["raster"]["dropped"]), documented(e));
-    if (e.polygons) EXPECT_EQ(keys_of(make_engine(e.name, {})->render(list).report["dropped"]), documented(e));
+    if (e.can.polygons) EXPECT_EQ(keys_of(make_engine(e.name, {})->render(list).report["dropped"]), documented(e));
   }
 }
 

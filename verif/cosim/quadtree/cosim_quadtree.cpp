@@ -52,7 +52,7 @@ cosim::BeforeRtl trace_start(CosimTrace& trace, const std::string& image, const 
                              cosim::RtlRunner& rtl) {
   if (!trace.on()) return {};
   return [&trace, image, &cfg, &rtl](long long cycles) {
-    rtl.trace_to(trace.plan(0, cycles, std::llround(1e6 / kQuadDefaultClockMhz), trace_cost(cfg.arch_text()), image));
+    rtl.trace_to(trace.plan(0, cycles, std::llround(kQuadDefaultClockNs * 1e3), trace_cost(cfg.arch_text()), image));
   };
 }
 
