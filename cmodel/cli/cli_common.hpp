@@ -15,6 +15,7 @@
 #include "common/error.hpp"
 #include "common/timing.hpp"
 #include "engine/engine.hpp"
+#include "manager/visibility_unit.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_loader.hpp"
@@ -46,6 +47,18 @@ struct ModelLimitArgs {
         ->check(CLI::Range(1, 4096));
   }
   SceneLimits limits() const { return SceneLimits{(long long)max_model_mb << 20}; }
+};
+
+// --manager-unit: how stage A decides V[i] (manager/visibility_unit.hpp): the hls/manager kernel
+// (the default, as stages C-F run theirs) or its double twin.
+struct ManagerUnitArgs {
+  std::string unit = "kernel";
+  void add_to(CLI::App* app) {
+    app->add_option("--manager-unit", unit,
+                    "stage A's visibility test: kernel (hls/manager, bit-accurate, default) or double (its twin)")
+        ->check(CLI::IsMember({"kernel", "double"}));
+  }
+  VisibilityArith arith() const { return unit == "double" ? VisibilityArith::kDouble : VisibilityArith::kKernel; }
 };
 
 // "A:B" (inclusive) or "K".

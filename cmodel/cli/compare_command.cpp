@@ -42,6 +42,7 @@ void CompareCommand::add_to(CLI::App& app) {
                 "also write DIR/index.html (needs --out): the images, the table, the report, provenance");
   engine.add_to(sub, true);
   model_limit.add_to(sub);
+  manager_unit.add_to(sub);
 }
 
 namespace {
@@ -163,7 +164,8 @@ int CompareCommand::run() {
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = eo.fan_split;  // the reference follows the engine's polygon split
   const FrameJobs jobs =
-      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
+      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
+                      manager_unit.arith());
   jobs.check_capacity(*make_engine(engine.engine, eo));
   if (html) prepare_compare_html(out_dir, report_file);
   OutputPlan plan;

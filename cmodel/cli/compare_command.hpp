@@ -18,6 +18,7 @@ struct CompareCommand {
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;
   ModelLimitArgs model_limit;
+  ManagerUnitArgs manager_unit;
   void add_to(CLI::App& app);
   int run();
 };

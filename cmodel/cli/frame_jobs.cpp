@@ -27,7 +27,7 @@ EngineOptions reference_options(const std::string& reference, int samples_per_pi
 }
 
 FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
-                          int channel, const SceneLimits& limits) {
+                          int channel, const SceneLimits& limits, VisibilityArith visibility) {
   FrameJobs j;
   j.input_ = input;
   const std::string text = read_text_file(input);
@@ -55,7 +55,7 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
       if (channel < 0 || c == channel) j.jobs_.push_back({f, c});
   j.frames_ = b - a + 1;
   j.channels_ = channel < 0 ? int(j.scene_->channels.size()) : 1;
-  j.pipeline_ = std::make_unique<ScenePipeline>(*j.scene_);
+  j.pipeline_ = std::make_unique<ScenePipeline>(*j.scene_, CullSettings{}, visibility);
   return j;
 }
 

@@ -36,7 +36,8 @@ inline void add_reference_spp(CLI::App* app, int& spp) {
 class FrameJobs {
  public:
   static FrameJobs load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
-                        int channel, const SceneLimits& limits = {});
+                        int channel, const SceneLimits& limits = {},
+                        VisibilityArith visibility = VisibilityArith::kKernel);
   std::size_t size() const { return jobs_.size(); }
   int frame(std::size_t k) const { return jobs_[k].first; }
   int channel(std::size_t k) const { return jobs_[k].second; }

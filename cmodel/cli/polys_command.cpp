@@ -18,6 +18,7 @@ void PolysCommand::add_to(CLI::App& app) {
   sub->add_option("--channel", channel, "channel")->check(CLI::Range(0, kMaxChannelIndex))->required();
   sub->add_option("--out", out_file, "output polygon list (JSON)")->required();
   model_limit.add_to(sub);
+  manager_unit.add_to(sub);
 }
 
 int PolysCommand::run() {
@@ -32,7 +33,7 @@ int PolysCommand::run() {
   plan.scene_inputs(scene);
   plan.file(out_file, "--out");
   plan.check();
-  const ScenePipeline pipeline(scene);
+  const ScenePipeline pipeline(scene, {}, manager_unit.arith());
   nlohmann::ordered_json rep;
   const ScreenFrame f = pipeline.geometry(frame, channel, rep);
   write_text_file(out_file, polygon_list_json(f));

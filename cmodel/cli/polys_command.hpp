@@ -15,6 +15,7 @@ struct PolysCommand {
   std::string scene_file, out_file;
   int frame = 0, channel = 0;
   ModelLimitArgs model_limit;
+  ManagerUnitArgs manager_unit;
   void add_to(CLI::App& app);
   int run();
 };

@@ -43,6 +43,7 @@ void RenderCommand::add_to(CLI::App& app) {
                 "provenance (docs/review_outputs.md)");
   engine.add_to(sub);
   model_limit.add_to(sub);
+  manager_unit.add_to(sub);
 }
 
 namespace {
@@ -111,10 +112,10 @@ std::string write_panorama(const Scene& scene, const std::string& out_dir, int f
 // Every frame and channel against the engine's capacities before the first image is written
 // (stages A and B only, and only when the scene could exceed them).
 void check_frames(const Scene& scene, int a, int b, const std::vector<int>& channels, const std::string& engine,
-                  const EngineOptions& eo) {
+                  const EngineOptions& eo, VisibilityArith visibility) {
   if (!scene_exceeds_ids(scene)) return;
   const auto checker = make_engine(engine, eo);
-  const ScenePipeline pipeline(scene);
+  const ScenePipeline pipeline(scene, {}, visibility);
   for (int frame = a; frame <= b; ++frame)
     for (int c : channels) {
       nlohmann::ordered_json unused;
@@ -167,11 +168,11 @@ int RenderCommand::run() {
   plan.folder(out_dir, "--out", names);
   plan.file(report_file, "--report");
   plan.check();
-  check_frames(scene, a, b, channels, engine.engine, eo);
+  check_frames(scene, a, b, channels, engine.engine, eo, manager_unit.arith());
   std::filesystem::create_directories(out_dir);
 
   // Phase 2: the frames.
-  const ScenePipeline pipeline(scene);
+  const ScenePipeline pipeline(scene, {}, manager_unit.arith());
   nlohmann::ordered_json report = render_report(*this, scene, eo, load_ms);
   const auto t_all = Clock::now();
   Progress progress("cig render", b - a + 1);

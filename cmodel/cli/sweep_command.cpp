@@ -57,6 +57,7 @@ void SweepCommand::add_to(CLI::App& app) {
                   "DIR/report.json and DIR/plot.png unless --report and --plot name files (docs/review_outputs.md)");
   engine.add_to(sub);
   model_limit.add_to(sub);
+  manager_unit.add_to(sub);
   sub->get_option("--engine")->required();
 }
 
@@ -265,7 +266,8 @@ int SweepCommand::run() {
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = base.fan_split;  // the reference follows the engines' polygon split
   const FrameJobs jobs =
-      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits());
+      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
+                      manager_unit.arith());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, combos);
   for (std::size_t v = 0; v < engines.size(); ++v) {
     try {

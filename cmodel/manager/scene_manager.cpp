@@ -18,13 +18,17 @@ bool sphere_may_be_visible(const ViewPyramid& pyramid, const glm::dvec3& c, doub
 
 namespace {
 
-// The sphere test of the channel's pyramid and the visibility range (Scene::range: wholly deeper
-// spheres are culled).
+// The sphere test: the visibility range (Scene::range: wholly deeper spheres are culled), then the
+// preliminary processing unit's V[i] against the channel's pyramid (visibility_unit.hpp: the
+// hls/manager kernel or its twin).
 struct SphereTest {
-  ViewPyramid pyramid;
+  VisibilityUnit unit;
   double range;
-  explicit SphereTest(const ChannelView& view) : pyramid(view.tan_half_fov, view.near), range(view.range) {}
-  bool visible(const glm::dvec3& c, double r) const { return c.z - r <= range && sphere_may_be_visible(pyramid, c, r); }
+  SphereTest(const ChannelView& view, VisibilityArith arith) : unit(view, arith), range(view.range) {}
+  // world: the sphere's centre in the world; eye: the same in eye coordinates (the model's doubles).
+  bool visible(const glm::dvec3& world, const glm::dvec3& eye, double r, SceneManagerStats& stats) const {
+    return eye.z - r <= range && unit.visible(world, r, stats.unit);
+  }
 };
 
 struct VisibleObject {
@@ -45,7 +49,7 @@ std::vector<VisibleObject> visible_objects(const WorldDatabase& db, const Channe
     const std::uint32_t i = options.tree ? candidates[k] : std::uint32_t(k);
     const WorldObject& o = db.objects[i];
     const glm::dvec3 c = view.to_eye(o.centre);
-    if (test.visible(c, o.radius)) visible.push_back({i, {c, o.radius, o.layer}});
+    if (test.visible(o.centre, c, o.radius, stats)) visible.push_back({i, {c, o.radius, o.layer}});
   }
   stats.sphere_ms += ms_since(t0);
   return visible;
@@ -59,7 +63,7 @@ std::size_t visible_subobjects(const WorldObject& o, const ChannelView& view, co
   for (std::uint32_t s = 0; s < o.subobjects.size(); ++s) {
     const WorldSubobject& sub = o.subobjects[s];
     const glm::dvec3 c = view.to_eye(sub.centre);
-    if (test.visible(c, sub.radius)) out.push_back({glm::length(c), s});
+    if (test.visible(sub.centre, c, sub.radius, stats)) out.push_back({glm::length(c), s});
   }
   stats.subobjects_tested += o.subobjects.size();
   stats.subobjects_visible += out.size() - first;
@@ -203,7 +207,7 @@ void reverse_priority(PriorityList& list) {
 
 std::vector<std::uint32_t> potentially_visible(const WorldDatabase& db, const ChannelView& view,
                                                const ManagerOptions& options, SceneManagerStats& stats) {
-  const SphereTest test(view);
+  const SphereTest test(view, options.visibility);
   std::vector<std::uint32_t> ids;
   for (const VisibleObject& v : visible_objects(db, view, test, options, stats)) ids.push_back(v.object);
   std::sort(ids.begin(), ids.end());
@@ -212,7 +216,7 @@ std::vector<std::uint32_t> potentially_visible(const WorldDatabase& db, const Ch
 
 PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, SceneManagerStats& stats,
                             const ManagerOptions& options) {
-  const SphereTest test(view);
+  const SphereTest test(view, options.visibility);
   stats.objects += db.objects.size();
   const std::vector<VisibleObject> visible = visible_objects(db, view, test, options, stats);
   stats.objects_visible += visible.size();

@@ -17,6 +17,7 @@
 
 #include "manager/channel_view.hpp"
 #include "manager/scene_quadtree.hpp"
+#include "manager/visibility_unit.hpp"
 #include "scene/world_database.hpp"
 
 namespace cig {
@@ -26,6 +27,7 @@ struct ManagerOptions {
   CullSettings culling;
   bool back_to_front = false;    // the priority list farthest first (painter's order)
   bool pairwise_groups = false;  // the seed's O(N^2) pair loop instead of the sweep (same groups)
+  VisibilityArith visibility = VisibilityArith::kKernel;  // V[i] by the hls/manager kernel or its twin
 };
 
 struct SceneManagerStats {
@@ -34,6 +36,7 @@ struct SceneManagerStats {
   std::uint64_t groups = 0, grouped_objects = 0, largest_group = 0, pair_tests = 0;
   std::vector<std::uint64_t> group_sizes;  // [k]: groups of k objects (k >= 2; [0], [1] unused)
   CullStats cull;                          // the quadtree walk (seed 003)
+  VisibilityUnitStats unit;                // the preliminary processing unit's spheres
   double sphere_ms = 0;                    // the kept objects' sphere tests
   double ms = 0;
 };

@@ -9,10 +9,11 @@
 
 namespace cig {
 
-ScenePipeline::ScenePipeline(const Scene& scene, const CullSettings& culling)
+ScenePipeline::ScenePipeline(const Scene& scene, const CullSettings& culling, VisibilityArith visibility)
     : scene_(scene), db_(build_world_database(scene)), tree_(std::make_unique<SceneQuadtree>(db_)) {
   manager_.tree = tree_.get();
   manager_.culling = culling;
+  manager_.visibility = visibility;
 }
 
 namespace {
@@ -26,6 +27,10 @@ nlohmann::ordered_json manager_report(const SceneManagerStats& ms, const Manager
           {"objects_visible", ms.objects_visible},
           {"subobjects_tested", ms.subobjects_tested},
           {"subobjects_visible", ms.subobjects_visible},
+          {"visibility_unit",
+           {{"arithmetic", visibility_arith_name(manager.visibility)},
+            {"spheres", ms.unit.spheres},
+            {"spheres_out_of_format", ms.unit.spheres_out_of_format}}},
           {"occlusion_groups",
            {{"groups", ms.groups},
             {"objects_in_groups_of_2_or_more", ms.grouped_objects},

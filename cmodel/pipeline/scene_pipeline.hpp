@@ -25,7 +25,9 @@ class ScenePipeline {
  public:
   // The world's quadtree is built once; culling selects how the scene manager walks it (seed 003's
   // line of sight by default; the visible objects are the same whatever the method).
-  explicit ScenePipeline(const Scene& scene, const CullSettings& culling = {});
+  // visibility: stage A's V[i] by the hls/manager kernel (the default) or its twin.
+  explicit ScenePipeline(const Scene& scene, const CullSettings& culling = {},
+                         VisibilityArith visibility = VisibilityArith::kKernel);
   const Scene& scene() const { return scene_; }
 
   // Stages A and B for one channel: the polygon list a raster engine receives.

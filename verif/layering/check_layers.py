@@ -26,7 +26,7 @@ ALLOWED = {
     # C model, in pipeline order
     "cmodel/common": set(),
     "cmodel/scene": {"cmodel/common"},
-    "cmodel/manager": {"cmodel/common", "cmodel/scene"},                      # stage A
+    "cmodel/manager": {"cmodel/common", "cmodel/scene", "hls/types", "hls/manager"},  # stage A, V[i] by its kernel
     "cmodel/frame": {"cmodel/common", "cmodel/scene"},                        # B -> engines record
     "cmodel/geometry": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/frame",
                         "hls/formatter"},                                      # stage B

@@ -54,12 +54,14 @@ ChannelView random_view(std::mt19937_64& rng) {
 void expect_every_method_equals_brute_force(const WorldDatabase& db, const SceneQuadtree& tree, const ChannelView& view,
                                             const char* where, long& kept_less) {
   ManagerOptions brute;
+  brute.visibility = VisibilityArith::kDouble;  // the exact test the node tests are conservative for
   SceneManagerStats st;
   const std::vector<std::uint32_t> want = potentially_visible(db, view, brute, st);
   for (CullMethod m : {CullMethod::kLineOfSight, CullMethod::kHierarchical, CullMethod::kProjection}) {
     ManagerOptions o;
     o.tree = &tree;
     o.culling.method = m;
+    o.visibility = VisibilityArith::kDouble;
     SceneManagerStats s;
     ASSERT_EQ(potentially_visible(db, view, o, s), want) << where << " " << cull_method_name(m);
     EXPECT_LE(s.cull.nodes_kept, tree.node_count());
@@ -99,13 +101,16 @@ TEST(SceneQuadtree, ConeAreaThresholdsAtTheirExtremesStayExact) {
   for (int view = 0; view < 40; ++view) {
     const ChannelView v = random_view(rng);
     SceneManagerStats st;
-    const std::vector<std::uint32_t> want = potentially_visible(db, v, ManagerOptions{}, st);
+    ManagerOptions brute;
+    brute.visibility = VisibilityArith::kDouble;  // the exact test (see above)
+    const std::vector<std::uint32_t> want = potentially_visible(db, v, brute, st);
     for (const CullSettings& s :
          {CullSettings{CullMethod::kLineOfSight, 0, 0}, CullSettings{CullMethod::kLineOfSight, 1e9, 1e9},
           CullSettings{CullMethod::kLineOfSight, 500, 20000}}) {
       ManagerOptions o;
       o.tree = &tree;
       o.culling = s;
+      o.visibility = VisibilityArith::kDouble;
       SceneManagerStats got;
       EXPECT_EQ(potentially_visible(db, v, o, got), want);
     }
