@@ -411,9 +411,7 @@ void ArchCommand::check_options() {
 }
 
 int ArchCommand::run() {
-  if (processor != "quadtree" && processor != "invparam")
-    throw InputError("", "--processor", "'" + processor + "' is not one of quadtree, invparam");
-  if (processor == "invparam") return run_invparam();
+  if (parse_processor(processor) == HardwareProcessor::kInvparam) return run_invparam();
   for (const char* o : {"--faces-per-object", "--objects", "--columns", "--pps", "--clock-ns", "--widths"})
     if (sub->count(o) > 0) throw InputError("", o, "needs --processor invparam");
   check_options();

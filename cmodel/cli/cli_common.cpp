@@ -80,6 +80,26 @@ EngineOptions EngineArgs::options() const {
   return o;
 }
 
+namespace {
+const std::pair<const char*, HardwareProcessor> kProcessors[] = {{"quadtree", HardwareProcessor::kQuadtree},
+                                                                 {"invparam", HardwareProcessor::kInvparam}};
+}  // namespace
+
+HardwareProcessor parse_processor(const std::string& text) {
+  std::string names;
+  for (const auto& p : kProcessors) {
+    if (text == p.first) return p.second;
+    names += std::string(names.empty() ? "" : ", ") + p.first;
+  }
+  throw InputError("", "--processor", "'" + text + "' is not one of " + names);
+}
+
+const char* processor_name(HardwareProcessor p) {
+  for (const auto& k : kProcessors)
+    if (k.second == p) return k.first;
+  return "?";
+}
+
 void check_output_dir(const std::string& dir, const char* option) {
   if (dir.empty()) throw InputError("", option, "the output folder is empty");
   std::error_code ec;

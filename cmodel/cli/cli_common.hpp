@@ -61,6 +61,13 @@ struct ManagerUnitArgs {
   VisibilityArith arith() const { return unit == "double" ? VisibilityArith::kDouble : VisibilityArith::kKernel; }
 };
 
+// The processors that have an architecture model and RTL (`cig arch`, `cig cosim` --processor):
+// seed 004's raster processor and seed 002's systolic array.
+enum class HardwareProcessor { kQuadtree, kInvparam };
+// InputError at --processor for a name that is none of them.
+HardwareProcessor parse_processor(const std::string& text);
+const char* processor_name(HardwareProcessor p);
+
 // "A:B" (inclusive) or "K".
 inline void parse_frames(const std::string& text, int& a, int& b) {
   auto bad = [&] { throw InputError("", "--frames", "'" + text + "' is not of the form A:B (inclusive, A <= B)"); };

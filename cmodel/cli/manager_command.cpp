@@ -1,4 +1,4 @@
-// cig manager --capacity [--clock MHZ] [--rate HZ] [--cost R=1,C=1,O=1,L=1,A=1,M=1,D=1]
+// cig manager --capacity [--clock-ns T] [--rate HZ] [--cost R=1,C=1,O=1,L=1,A=1,M=1,D=1]
 //                        [--occluded LIST] [--planes LIST] [--points LIST]
 //                        [--schedule sequence|pipeline] [--pairs neighbours|all]
 // Seed 000's scene manager as a counted model (cmodel/manager/operation_counts.hpp): the largest No
@@ -24,7 +24,7 @@ namespace cig::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "cig manager --capacity [--clock MHZ] [--rate HZ] [--cost R=1,C=1,O=1,L=1,A=1,M=1,D=1] [--occluded LIST] "
+    "cig manager --capacity [--clock-ns T] [--rate HZ] [--cost R=1,C=1,O=1,L=1,A=1,M=1,D=1] [--occluded LIST] "
     "[--planes LIST] [--points LIST] [--schedule sequence|pipeline] [--pairs neighbours|all]";
 constexpr std::uint64_t kCap = 10000000;  // the search for No stops here
 constexpr std::uint64_t kClaimObjects = 1000, kClaimOccluded = 60;
@@ -232,12 +232,12 @@ void print_verdicts(const CapacityQuestion& q, const CapacityQuestion& table, co
 CapacityQuestion capacity_question(const ManagerCommand& c) {
   if (!c.capacity)
     throw InputError("", "--capacity", "cig manager needs --capacity (usage: " + std::string(kUsage) + ")");
-  if (!(c.clock_mhz > 0 && c.clock_mhz <= 1e6))
-    throw InputError("", "--clock", "the clock must be > 0 and <= 1e6 MHz, is " + number(c.clock_mhz));
+  if (!(c.clock_ns > 0 && c.clock_ns <= 1e6))
+    throw InputError("", "--clock-ns", "the clock period must be > 0 and <= 1e6 ns, is " + number(c.clock_ns));
   if (!(c.rate_hz > 0 && c.rate_hz <= 1e4))
     throw InputError("", "--rate", "the frame rate must be > 0 and <= 1e4 Hz, is " + number(c.rate_hz));
   CapacityQuestion q;
-  q.clock_mhz = c.clock_mhz;
+  q.clock_mhz = 1e3 / c.clock_ns;
   q.frame_hz = c.rate_hz;
   q.cost = parse_cost(c.cost_text);
   q.schedule = c.schedule == "pipeline" ? UnitSchedule::kPipeline : UnitSchedule::kSequence;
@@ -271,7 +271,7 @@ std::vector<Shape> object_shapes(const ManagerCommand& c) {
 void ManagerCommand::add_to(CLI::App& app) {
   sub = app.add_subcommand("manager", "seed 000's scene manager as a counted model: operation counts and capacity");
   sub->add_flag("--capacity", capacity, "the largest No per frame for each Noc and Npl x Np, and the seed's claim");
-  sub->add_option("--clock", clock_mhz, "clock, MHz (default 100)");
+  sub->add_option("--clock-ns", clock_ns, "the clock period in ns (default 10: 100 MHz)");
   sub->add_option("--rate", rate_hz, "frame rate, Hz (default 25)");
   sub->add_option("--cost", cost_text,
                   "cycles per operation by kind, e.g. R=4,L=2,D=8 (kinds R, C, O, L, A, M, D; default 1 each)");

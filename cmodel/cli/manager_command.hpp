@@ -17,7 +17,7 @@ namespace cig::cli {
 struct ManagerCommand {
   CLI::App* sub = nullptr;
   bool capacity = false;
-  double clock_mhz = 100, rate_hz = 25;
+  double clock_ns = 10, rate_hz = 25;  // the seed's 100 MHz
   std::string cost_text, schedule = "sequence", pairs = "neighbours";
   std::vector<long long> occluded{0, 20, 60, 100, 200}, planes, points;
   void add_to(CLI::App& app);

@@ -66,10 +66,12 @@ void CosimCommand::add_options(CLI::App& app) {
 }
 
 int CosimCommand::run() {
-  const bool ip = processor == "invparam";
+  const bool ip = parse_processor(processor) == HardwareProcessor::kInvparam;
   for (const CLI::Option* o : ip ? quadtree_only : invparam_only)
     if (o->count() > 0)
-      throw InputError("", o->get_name(), std::string("only with --processor ") + (ip ? "quadtree" : "invparam"));
+      throw InputError("", o->get_name(),
+                       std::string("only with --processor ") +
+                           processor_name(ip ? HardwareProcessor::kQuadtree : HardwareProcessor::kInvparam));
   return ip ? run_invparam() : run_quadtree();
 }
 
