@@ -1098,6 +1098,7 @@ class Checker {
               "-std=c++14",  // the HLS tools' standard; a later construct is an error, rule later-standard
               "-Werror=c++17-extensions",
               "-Werror=c++20-extensions",
+              "-pedantic-errors",  // GCC reports some later constructs (nested namespaces) only as pedantic
               "-D__SYNTHESIS__",
               "-UCIG_HLS_SYSTEMC",
               "-I" + (work / "poisoned").string(),
