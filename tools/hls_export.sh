@@ -209,9 +209,10 @@ EOF
 
 write_vitis() {
   cat > "$staging/run_vitis.tcl" <<EOF
-# Vitis HLS: vitis_hls -f run_vitis.tcl. Written by tools/hls_export.sh.
-# C simulation (the testbench replays vectors/$top.vec and exits non-zero on any difference),
-# synthesis at 100 MHz, C/RTL co-simulation with the same testbench and vectors.
+# Vitis HLS, Tcl flow: vitis_hls -f run_vitis.tcl (2023.2; from 2024.2 also
+# vitis-run --mode hls --tcl run_vitis.tcl). Written by tools/hls_export.sh. C simulation (the
+# testbench replays the golden vectors and exits non-zero on any difference), synthesis at
+# 100 MHz, C/RTL co-simulation with the same testbench and vectors. The unified flow: hls_config.cfg.
 set here [file normalize [file dirname [info script]]]
 open_project -reset proj_$top
 set_top $top
@@ -335,7 +336,8 @@ above; \`./tb_$top FILE\` replays another file.
 - Vitis HLS, unified flow (2023.2 and later): \`v++ -c --mode hls --config hls_config.cfg
   --work_dir proj_$top\` synthesises; \`vitis-run --mode hls --csim\` (or \`--cosim\`) with the
   same \`--config\` and \`--work_dir\` runs C simulation (C/RTL co-simulation).
-- Vitis HLS, Tcl flow: \`vitis_hls -f run_vitis.tcl\`.
+- Vitis HLS, Tcl flow: \`vitis_hls -f run_vitis.tcl\` (from 2024.2 also \`vitis-run --mode hls
+  --tcl run_vitis.tcl\`).
 - Catapult HLS: \`catapult -shell -file run_catapult.tcl\`.
 
 Each sets the top, the files, the testbench, a 100 MHz clock (10 ns) and the interfaces; the Tcl

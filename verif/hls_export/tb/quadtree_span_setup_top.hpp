@@ -1,6 +1,6 @@
 // Testbench case of quadtree_span_setup_top (hls/quadtree/span_setup.hpp): a formatted polygon, one
 // of its span pieces and the raster size in; the piece's level-0 window (four edges, the polygon's
-// parameter planes) and whether the polygon has any plane at all (ok) out.
+// parameter planes) and whether the polygon has any plane at all (the result) out.
 #pragma once
 
 #include "fields_quadtree.hpp"
