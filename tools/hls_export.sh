@@ -5,13 +5,16 @@
 # OUTDIR) as a self-contained folder:
 #   hls/...                  the kernel and type headers it includes (found by the compiler, in both
 #                            type configurations: native and -DCIG_HLS_SYSTEMC)
-#   src/TOP.cpp              the synthesis top: the kernel's top function at global scope
-#   tb/                      the C testbench (tb_TOP.cpp and the headers it includes)
+#   src/TOP.cpp              the synthesis top: the kernel's top function at global scope, written
+#                            from the kernel's port table (CIG_HLS_PORTS_TOP, beside the kernel)
+#   tb/                      the C testbench (tb_TOP.cpp, written here, and the headers it includes)
 #   vectors/TOP.vec          the golden vectors it replays (verif/golden/hls/)
-#   run_vitis.tcl            Vitis HLS: project, top, files, testbench, 100 MHz, interfaces,
-#                            csim / csynth / cosim
+#   hls_config.cfg           Vitis HLS unified flow (v++ -c --mode hls): part, top, files,
+#                            testbench, 100 MHz, interfaces
+#   run_vitis.tcl            Vitis HLS Tcl flow: the same, then csim / csynth / cosim
 #   run_catapult.tcl         Catapult HLS: the same steps
-#   README.md                the top, its ports and their bit widths, how to build and run
+#   README.md                the top, its signature, its ports and their bit widths, how to build
+#                            and run
 # The testbench builds from the folder alone:
 #   g++ -std=c++14 -I. tb/tb_TOP.cpp src/TOP.cpp -o tb && ./tb              (native types: C++14, as the HLS tools)
 #   g++ -std=c++17 -DCIG_HLS_SYSTEMC -I. tb/tb_TOP.cpp src/TOP.cpp -lsystemc -o tb && ./tb
@@ -34,7 +37,12 @@ marker=.cig-hls-bundle
 of_prog=tools/hls_export.sh
 # shellcheck source-path=SCRIPTDIR source=lib/output_folder.sh
 source "$repo/tools/lib/output_folder.sh"
-tops() { ls "$repo/verif/hls_export/syn" | sed -n 's/\.cpp$//p'; }
+# The tops: every port table in hls/ (hls/types/top_ports.hpp), and the header that holds it.
+tops() {
+  grep -rhoE --include='*.hpp' '^#define CIG_HLS_PORTS_[A-Za-z0-9_]+_top\(' "$repo/hls" |
+    sed 's/^#define CIG_HLS_PORTS_//; s/($//' | sort
+}
+kernel_header() { grep -rlE --include='*.hpp' "^#define CIG_HLS_PORTS_$1\\(" "$repo/hls" | head -1; }
 
 usage() {
   cat <<EOF
@@ -92,43 +100,119 @@ marker_header() {  # top [extra lines]
   [ $# -lt 2 ] || printf '%s\n' "$2"
 }
 
-# Every file of the tree the testbench and the synthesis top include, in both configurations.
+# Every file of the tree the testbench (the staged tb/tb_TOP.cpp) and the kernel include, in both
+# configurations.
 dependencies() {
   local flags
   for flags in "" "-DCIG_HLS_SYSTEMC"; do
-    g++ -std=c++14 $flags -I"$repo" -I"$repo/verif/hls_export" -MM -MG \
-      "$tb_dir/tb_$top.cpp" "$repo/verif/hls_export/syn/$top.cpp"
+    g++ -std=c++14 $flags -I"$repo" -I"$tb_dir" -MM -MG "$staging/tb/tb_$top.cpp" "$kernel"
   done | tr ' \\' '\n\n' | grep -v ':$' | grep -v '^$' | sort -u
 }
 
-# Interface of a port, from its direction and width (the --ports table): memories and tables
-# (64 Kbit and more) stay memories the kernel addresses (ap_memory: the frame memory, the segment memory,
-# the mask memory, the colour and fog tables); records travel as one wide word (aggregated),
-# inputs without handshake (ap_none, valid with ap_start), outputs with a valid strobe (ap_vld;
-# ap_ovld for in-out); the block protocol is ap_ctrl_hs (start, done, idle, ready).
-interface_of() {  # direction bits
-  if [ "$2" -ge 65536 ]; then echo ap_memory
-  elif [ "$1" = in ]; then echo ap_none
-  elif [ "$1" = inout ]; then echo ap_ovld
-  else echo ap_vld
-  fi
+# The port table as the preprocessor expands it, one entry a line: "result TYPE",
+# "port NAME DIRECTION INTERFACE TYPE", "array NAME DIRECTION INTERFACE EXTENT ELEMENT".
+table_rows() {
+  printf '%s\n' "#include \"${kernel#"$repo"/}\"" '#define CIG_ROW_RESULT(t) @result t' \
+    '#define CIG_ROW_PORT(n, d, i, t) @port n d i t' '#define CIG_ROW_ARRAY(n, d, i, e, x) @array n d i x e' \
+    "@rows CIG_HLS_PORTS_$top(CIG_ROW_PORT, CIG_ROW_ARRAY, CIG_ROW_RESULT)" |
+    g++ -std=c++14 -E -P -x c++ -I"$repo" - | sed -n 's/^@rows *//p' | sed 's/ *@/\n/g' | grep -v '^$'
 }
-port_rows() { echo "$ports" | awk -F'|' '{gsub(/[` ]/, "", $2); gsub(/ /, "", $3); gsub(/ /, "", $5); print $2, $3, $5}'; }
 
-vitis_interfaces() {
-  port_rows | while read -r name dir bits; do
-    [ "$name" = return ] && continue
-    mode=$(interface_of "$dir" "$bits")
-    if [ "$mode" != ap_memory ] && [ "$bits" -gt 64 ]; then echo "set_directive_aggregate -compact bit $top $name"; fi
-    echo "set_directive_interface -mode $mode $top $name"
+# src/TOP.cpp: the kernel at global scope as a plain function (the table's types, unqualified).
+write_syn_top() {
+  local rows result params args lead call
+  rows=$(table_rows)
+  result=$(echo "$rows" | sed -n 's/^result //p')
+  [ -n "$result" ] || of_fail "$top: no port table in ${kernel#"$repo"/}"
+  params=$(echo "$rows" | awk '
+    $1 == "port" { t = $0; sub(/^port [^ ]+ [^ ]+ [^ ]+ /, "", t); print t " " $2 }
+    $1 == "array" { e = $0; sub(/^array [^ ]+ [^ ]+ [^ ]+ [^ ]+ /, "", e); print e " (&" $2 ")[" $5 "]" }')
+  args=$(echo "$rows" | awk '$1 == "port" || $1 == "array" { printf "%s%s", (n++ ? ", " : ""), $2 }')
+  lead=$(printf '%*s' $((${#result} + ${#top} + 2)) '')
+  call="return cig::hls::$top($args);"
+  [ "$result" != void ] || call="cig::hls::$top($args);"
+  cat > "$staging/src/$top.cpp" <<EOF
+// Synthesis top: the kernel at global scope, the name syn.top, set_top and Catapult's design
+// take, and the function the testbench calls, so that C/RTL co-simulation puts the RTL in its
+// place. Written by tools/hls_export.sh from the kernel's port table, its signature written once
+// beside the kernel: CIG_HLS_PORTS_$top in ${kernel#"$repo"/}.
+#include "${kernel#"$repo"/}"
+
+using namespace cig::hls;  // the port types, named as in the table
+
+$result $top($(echo "$params" | sed "2,\$s/^/$lead/; \$!s/\$/,/")) {
+  $call
+}
+EOF
+}
+
+# tb/tb_TOP.cpp: the testbench's main for the case tb/TOP.hpp.
+write_tb_main() {
+  cat > "$staging/tb/tb_$top.cpp" <<EOF
+// Testbench: replays the golden vectors through the synthesis top and exits non-zero on any
+// difference (tb_main.hpp; the case, its inputs, outputs and call from the kernel's port table:
+// $top.hpp). Written by tools/hls_export.sh.
+#include "$top.hpp"
+#include "tb_main.hpp"
+
+CIG_TB_MAIN($top)
+EOF
+}
+
+# The ports as the testbench prints them (--ports, from the port table): name, direction,
+# interface and bits. The interfaces are the table's; a port that is not a memory and is wider
+# than 64 bits (a record) travels as one word, its fields packed (aggregate, compact bit).
+port_rows() {
+  echo "$ports" | awk -F'|' '{gsub(/[` ]/, "", $2); gsub(/ /, "", $3); gsub(/ /, "", $4); gsub(/ /, "", $6);
+    if ($2 != "return") print $2, $3, $4, $6}'
+}
+aggregated() { [ "$2" != ap_memory ] && [ "$3" -gt 64 ]; }  # direction interface bits
+
+vitis_interfaces() {  # FORMAT: tcl or cfg
+  port_rows | while read -r name dir mode bits; do
+    if [ "$1" = tcl ]; then
+      if aggregated "$dir" "$mode" "$bits"; then echo "set_directive_aggregate -compact bit $top $name"; fi
+      echo "set_directive_interface -mode $mode $top $name"
+    else
+      if aggregated "$dir" "$mode" "$bits"; then echo "syn.directive.aggregate=$top $name compact=bit"; fi
+      echo "syn.directive.interface=$top $name mode=$mode"
+    fi
   done
+}
+
+write_vitis_cfg() {
+  cat > "$staging/hls_config.cfg" <<EOF
+# Vitis HLS unified flow (2023.2 and later, 2025.x), run from the bundle's folder (W: proj_TOP):
+#   v++ -c --mode hls --config hls_config.cfg --work_dir W              synthesis
+#   vitis-run --mode hls --csim --config hls_config.cfg --work_dir W    C simulation
+#   vitis-run --mode hls --cosim --config hls_config.cfg --work_dir W   C/RTL co-simulation
+# Paths are the bundle's (this file's folder). The testbench replays vectors/TOP.vec, or the copy
+# tb.file puts where it runs, and exits non-zero on any difference. The part (xcvu9p) is a
+# placeholder for your own. Written by tools/hls_export.sh.
+part=xcvu9p-flga2104-2-i
+
+[hls]
+flow_target=vivado
+clock=10ns
+syn.top=$top
+syn.file=src/$top.cpp
+syn.cflags=-std=c++14 -I.
+tb.file=tb/tb_$top.cpp
+tb.file=vectors/$top.vec
+tb.cflags=-std=c++14 -I.
+cosim.rtl=verilog
+# Interfaces (README.md, "Ports"): the block protocol, then each port as its table sets it.
+syn.directive.interface=$top mode=ap_ctrl_hs
+$(vitis_interfaces cfg)
+EOF
 }
 
 write_vitis() {
   cat > "$staging/run_vitis.tcl" <<EOF
-# Vitis HLS: vitis_hls -f run_vitis.tcl. Written by tools/hls_export.sh.
-# C simulation (the testbench replays vectors/$top.vec and exits non-zero on any difference),
-# synthesis at 100 MHz, C/RTL co-simulation with the same testbench and vectors.
+# Vitis HLS, Tcl flow: vitis_hls -f run_vitis.tcl (2023.2; from 2024.2 also
+# vitis-run --mode hls --tcl run_vitis.tcl). Written by tools/hls_export.sh. C simulation (the
+# testbench replays the golden vectors and exits non-zero on any difference), synthesis at
+# 100 MHz, C/RTL co-simulation with the same testbench and vectors. The unified flow: hls_config.cfg.
 set here [file normalize [file dirname [info script]]]
 open_project -reset proj_$top
 set_top $top
@@ -139,7 +223,7 @@ set_part {xcvu9p-flga2104-2-i}
 create_clock -period 10 -name default
 # Interfaces (README.md, "Ports").
 set_directive_interface -mode ap_ctrl_hs $top return
-$(vitis_interfaces)
+$(vitis_interfaces tcl)
 csim_design -argv "\$here/vectors/$top.vec"
 csynth_design
 cosim_design -argv "\$here/vectors/$top.vec" -rtl verilog
@@ -148,9 +232,8 @@ EOF
 }
 
 catapult_interfaces() {
-  port_rows | while read -r name dir bits; do
-    [ "$name" = return ] && continue
-    if [ "$(interface_of "$dir" "$bits")" = ap_memory ]; then
+  port_rows | while read -r name dir mode bits; do
+    if [ "$mode" = ap_memory ]; then
       echo "directive set /$top/$name:rsc -MAP_TO_MODULE ccs_sample_mem.ccs_ram_sync_1R1W"
     elif [ "$dir" = in ]; then
       echo "directive set /$top/$name:rsc -MAP_TO_MODULE ccs_ioport.ccs_in"
@@ -193,49 +276,75 @@ EOF
 }
 
 write_readme() {
-  local count
+  local count signature
   count=$(grep -c '^>' "$vectors")
+  signature=$(sed -n "/^[^/ ].* $top(/,/) {\$/p" "$staging/src/$top.cpp" | sed '$ s/ {$/;/')
   cat > "$staging/README.md" <<EOF
 # HLS hand-off bundle: \`$top\`
 
 Written by \`tools/hls_export.sh $top OUTDIR\` from the cig source tree. Self-contained: the
-kernel's headers (\`hls/\`: C++17, the HLS subset, no dynamic memory, no floating point), its
-synthesis top (\`src/$top.cpp\`: \`$top\` at global scope, the name \`set_top\` takes), a C
-testbench (\`tb/\`) and $count golden vectors (\`vectors/$top.vec\`) written by the C model.
-\`.cig-hls-bundle\` lists the files the script wrote: a later export into this folder replaces or
-removes only those, and leaves any other file (your notes) in place.
+kernel's headers (\`hls/\`: C++14, the HLS subset, no dynamic memory, no floating point), its
+synthesis top (\`src/$top.cpp\`: \`$top\` at global scope, the name the tools' top setting
+takes), a C++ testbench (\`tb/\`) and $count golden vectors (\`vectors/$top.vec\`) written by the
+C model. \`.cig-hls-bundle\` lists the files the script wrote: a later export into this folder
+replaces or removes only those, and leaves any other file (your notes) in place.
+
+Targeted tools: Vitis HLS 2023.2 and later (the unified flow, \`hls_config.cfg\`, as in 2025.x;
+the Tcl flow, \`run_vitis.tcl\`) and Catapult HLS (\`run_catapult.tcl\`). C++ standard: C++14,
+the common subset of both; every file here compiles with \`-std=c++14 -pedantic-errors\`.
+
+## Signature
+
+The kernel's signature is written once, as its port table \`CIG_HLS_PORTS_$top\` beside the
+kernel in \`${kernel#"$repo"/}\` (\`hls/types/top_ports.hpp\`); the kernel, \`src/$top.cpp\`, the
+testbench's case (\`tb/$top.hpp\`) and the table below are expanded from it. Expanded (the types
+are in namespace \`cig::hls\`):
+
+\`\`\`c++
+$signature
+\`\`\`
 
 ## Ports
 
 Bits are the C++ record's bits: the concatenation of its fields in the order listed (arrays:
-elements x bits). Interfaces as \`run_vitis.tcl\` sets them: block protocol \`ap_ctrl_hs\`; ports
-of 64 Kbit and more (memories, tables) \`ap_memory\`; records aggregated into one word; inputs
-\`ap_none\`, outputs \`ap_vld\`, in-out \`ap_ovld\`.
+elements x bits). Interfaces as the port table gives them and \`hls_config.cfg\` and
+\`run_vitis.tcl\` set them: block protocol \`ap_ctrl_hs\` (the return value, if any, on
+\`ap_return\`, valid with \`ap_done\`); memories and tables \`ap_memory\`; inputs \`ap_none\`;
+outputs \`ap_vld\`, in-out registers \`ap_ovld\`; a record of more than 64 bits that is not a
+memory aggregated into one word, its fields packed (\`compact=bit\`).
 
-| port | direction | C++ type | bits | fields (bits) |
-|---|---|---|---|---|
+| port | direction | interface | C++ type | bits | fields (bits) |
+|---|---|---|---|---|---|
 $ports
 
 ## Build and run the testbench
 
 \`\`\`
-g++ -std=c++14 -O1 -I. tb/tb_$top.cpp src/$top.cpp -o tb_$top && ./tb_$top
+g++ -std=c++14 -pedantic-errors -O1 -I. tb/tb_$top.cpp src/$top.cpp -o tb_$top && ./tb_$top
 g++ -std=c++17 -O1 -DCIG_HLS_SYSTEMC -I. tb/tb_$top.cpp src/$top.cpp -lsystemc -o tb_$top && ./tb_$top
 \`\`\`
 
 The first is C++14, what Vitis HLS and Catapult compile. The second maps the bit-accurate types
 onto SystemC's \`sc_int\`/\`sc_uint\` (Debian: libsystemc-dev) and takes C++17, the standard
-that library was built with (SystemC's headers check it when linking); both must pass. Exit status: 0 every vector matches, 1 a difference (each
-differing vector and its first differing field are printed), 2 a missing or malformed vector
-file. \`./tb_$top --ports\` prints the table above; \`./tb_$top FILE\` replays another file.
+that library was built with (SystemC's headers check it when linking); both must pass. Exit
+status: 0 every vector matches, 1 a difference (each differing vector and its first differing
+field are printed), 2 a missing or malformed vector file. \`./tb_$top --ports\` prints the table
+above; \`./tb_$top FILE\` replays another file.
 
 ## Synthesis
 
-\`vitis_hls -f run_vitis.tcl\` or \`catapult -shell -file run_catapult.tcl\`: project, top, files,
-testbench, 100 MHz clock (10 ns), interfaces, then C simulation, synthesis and C/RTL
-co-simulation with the same vectors. The part (xcvu9p) is a placeholder for your own. The
-scripts are written from the tools' documented commands; neither tool runs on the machine that
-builds cig, so they are not exercised by its tests (the testbench and the vectors are).
+- Vitis HLS, unified flow (2023.2 and later): \`v++ -c --mode hls --config hls_config.cfg
+  --work_dir proj_$top\` synthesises; \`vitis-run --mode hls --csim\` (or \`--cosim\`) with the
+  same \`--config\` and \`--work_dir\` runs C simulation (C/RTL co-simulation).
+- Vitis HLS, Tcl flow: \`vitis_hls -f run_vitis.tcl\` (from 2024.2 also \`vitis-run --mode hls
+  --tcl run_vitis.tcl\`).
+- Catapult HLS: \`catapult -shell -file run_catapult.tcl\`.
+
+Each sets the top, the files, the testbench, a 100 MHz clock (10 ns) and the interfaces; the Tcl
+scripts then run C simulation, synthesis and C/RTL co-simulation with the same vectors. The part
+(xcvu9p) is a placeholder for your own. The files are written from the tools' documented commands;
+neither tool runs on the machine that builds cig, so they are not exercised by its tests (the
+testbench and the vectors are, and the configuration's top and files are checked).
 
 ## Kernel headers
 
@@ -244,33 +353,39 @@ EOF
 }
 
 # TOP's bundle, staged in $stage_root/TOP (nothing is written to OUTDIR yet): first its files (the
-# headers, the tops, the vectors; the generated ones empty), which is all the check of its folder
-# needs, then the generated files (the port table needs the testbench compiled, the slow part).
+# synthesis top and the testbench's main from the port table, the headers, the vectors; the scripts
+# and the README empty), which is all the check of its folder needs, then the scripts and the
+# README (the port table with its widths needs the testbench compiled, the slow part).
 stage_top_files() {
   local f
   staging=$stage_root/$top
+  kernel=$(kernel_header "$top")
   mkdir -p "$staging/src" "$staging/tb" "$staging/vectors"
+  write_syn_top
+  write_tb_main
   for f in $(dependencies); do
     f=$(realpath "$f")
     case $f in
-      "$repo"/hls/*) mkdir -p "$staging/$(dirname "${f#$repo/}")"; cp "$f" "$staging/${f#$repo/}" ;;
+      "$staging"/*) ;;
+      "$repo"/hls/*) mkdir -p "$staging/$(dirname "${f#"$repo"/}")"; cp "$f" "$staging/${f#"$repo"/}" ;;
       "$tb_dir"/*) cp "$f" "$staging/tb/" ;;
-      "$repo"/verif/hls_export/syn/*) cp "$f" "$staging/src/" ;;
       *) echo "tools/hls_export.sh: $f: a dependency outside hls/ and the testbench" >&2; exit 2 ;;
     esac
   done
   cp "$repo/verif/golden/hls/$top.vec" "$staging/vectors/"
-  touch "$staging/run_vitis.tcl" "$staging/run_catapult.tcl" "$staging/README.md"
+  touch "$staging/hls_config.cfg" "$staging/run_vitis.tcl" "$staging/run_catapult.tcl" "$staging/README.md"
 }
 
 stage_top_generated() {
   vectors=$repo/verif/golden/hls/$top.vec
   staging=$stage_root/$top
-  # The port table (the testbench prints it) for the README; -O0: it only prints the table.
+  # The port table with its widths (the testbench prints it) for the README and the interface
+  # directives; -O0: it only prints the table. Building it also builds the synthesis top.
   g++ -std=c++14 -O0 -I"$staging" "$staging/tb/tb_$top.cpp" "$staging/src/$top.cpp" -o "$stage_root/tb_$top"
   ports=$("$stage_root/tb_$top" --ports)
   rm -f "$stage_root/tb_$top"
   headers=$(cd "$staging" && find hls -name '*.hpp' | sort)
+  write_vitis_cfg
   write_vitis
   write_catapult
   write_readme

@@ -38,6 +38,7 @@
 #pragma once
 
 #include "hls/formatter/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -206,7 +207,12 @@ inline ZFloat to_zfloat(const UInt<64>& bits) {
 //   Light:   v[0] is the centre (x, y, z; i from Is = the light's intensity), d its diameter; the
 //            other vertices zero.
 //   Colour, n, opaque, protect and id are copied or formatted for both.
-inline void formatter_top(const RawPrimitive& in, FormattedPrimitive& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_formatter_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                           \
+  PORT(in, in, ap_none, const RawPrimitive&)             \
+  PORT(out, out, ap_vld, FormattedPrimitive&)
+inline CIG_HLS_TOP(formatter_top) {
   const UInt<5> count = in.is_light ? UInt<5>(1) : in.n;
   for (int k = 0; k < kMaxVertices; ++k) {
     FormattedVertex fv;  // zero when unused

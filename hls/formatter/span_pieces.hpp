@@ -28,6 +28,7 @@
 #include <cstdint>
 
 #include "hls/formatter/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -286,7 +287,13 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
 }
 
 // Top function (HLS): the split of one formatted polygon, shared by both raster engines' setups.
-inline void span_pieces_top(const FormattedPrimitive& in, UInt<4> raster_log2, SpanPieces& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_span_pieces_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                             \
+  PORT(in, in, ap_none, const FormattedPrimitive&)         \
+  PORT(raster_log2, in, ap_none, UInt<4>)                  \
+  PORT(out, out, ap_vld, SpanPieces&)
+inline CIG_HLS_TOP(span_pieces_top) {
   split_into_span_pieces(in, int(raster_log2.value()), out);
 }
 

@@ -35,6 +35,7 @@
 #pragma once
 
 #include "hls/invparam/tokens.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -217,8 +218,13 @@ CIG_HLS_INLINE PpOutputs<W> pp_clock(PpState<W>& st, const Word<W>& input, const
 constexpr int kPpTopWordBits = 64;
 
 // Top function (HLS): one clock of one pixel processor.
-inline PpOutputs<kPpTopWordBits> invparam_pixel_processor_top(PpState<kPpTopWordBits>& st,
-                                                              const Word<kPpTopWordBits>& input, const PpCtrl& ctrl) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_invparam_pixel_processor_top(PORT, ARRAY, RESULT) \
+  RESULT(PpOutputs<kPpTopWordBits>)                                     \
+  PORT(st, inout, ap_ovld, PpState<kPpTopWordBits>&)                    \
+  PORT(input, in, ap_none, const Word<kPpTopWordBits>&)                 \
+  PORT(ctrl, in, ap_none, const PpCtrl&)
+inline CIG_HLS_TOP(invparam_pixel_processor_top) {
   return pp_clock(st, input, ctrl);
 }
 

@@ -29,6 +29,7 @@
 
 #include "hls/formatter/sample_lattice.hpp"
 #include "hls/invparam/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -148,10 +149,16 @@ void invparam_column(const InvparamFaces<W>& faces, const InvparamColumn<W>& col
 
 // The HLS top in the default word: W = 64 (the seed's "64 bits to 100 km"; an 80-bit register).
 constexpr int kDefaultWordBits = 64;
-inline void invparam_column_top(const InvparamFaces<kDefaultWordBits>& faces,
-                                const InvparamColumn<kDefaultWordBits>& column, int rows,
-                                const Word<kDefaultWordBits>& eps, const Word<kDefaultWordBits>& tau_near,
-                                InvparamSample<kDefaultWordBits> out[kMaxSamplesPerColumn]) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_invparam_column_top(PORT, ARRAY, RESULT)                       \
+  RESULT(void)                                                                       \
+  PORT(faces, in, ap_memory, const InvparamFaces<kDefaultWordBits>&)                 \
+  PORT(column, in, ap_memory, const InvparamColumn<kDefaultWordBits>&)               \
+  PORT(rows, in, ap_none, int)                                                       \
+  PORT(eps, in, ap_none, const Word<kDefaultWordBits>&)                              \
+  PORT(tau_near, in, ap_none, const Word<kDefaultWordBits>&)                         \
+  ARRAY(out, out, ap_memory, InvparamSample<kDefaultWordBits>, kMaxSamplesPerColumn)
+inline CIG_HLS_TOP(invparam_column_top) {
   invparam_column<kDefaultWordBits>(faces, column, rows, eps, tau_near, out);
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "hls/manager/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -36,7 +37,12 @@ inline UInt<20> ceil_sqrt(const UInt<38>& q) {
 
 }  // namespace manager_detail
 
-inline void manager_channel_setup_top(const ManagerChannel& in, ManagerChannelSetup& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_manager_channel_setup_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                                       \
+  PORT(in, in, ap_none, const ManagerChannel&)                       \
+  PORT(out, out, ap_vld, ManagerChannelSetup&)
+inline CIG_HLS_TOP(manager_channel_setup_top) {
   const UInt<18> t = in.tan_half_fov.raw();
   const UInt<37> q = t * t + UInt<34>(std::uint64_t{1} << 32);  // (1 + t^2) * 2^32, exact
   // S <= ceil(sqrt(2^32 + (2^18 - 1)^2)) = 270,211 < 2^19: the narrowing keeps every bit.

@@ -47,6 +47,7 @@
 #pragma once
 
 #include "hls/manager/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -62,7 +63,13 @@ inline ManagerWidening widening(const ManagerDelta (&d)[kManagerAxes]) {
 
 }  // namespace manager_detail
 
-inline void manager_visibility_top(const ManagerChannelSetup& setup, const ManagerObject& obj, ManagerVisibility& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_manager_visibility_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                                    \
+  PORT(setup, in, ap_none, const ManagerChannelSetup&)            \
+  PORT(obj, in, ap_none, const ManagerObject&)                    \
+  PORT(out, out, ap_vld, ManagerVisibility&)
+inline CIG_HLS_TOP(manager_visibility_top) {
   const ManagerChannel& ch = setup.channel;
 
   // Centre transform: exact difference and products, one floor.

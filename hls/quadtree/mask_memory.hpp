@@ -15,6 +15,7 @@
 #pragma once
 
 #include "hls/quadtree/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -63,7 +64,15 @@ inline int mask_set(MaskMemory& m, int level, int x, int y, int q) {
 }
 
 // Top function (HLS): one set request (level, address, child) with its upward closure.
-inline UInt<5> mask_memory_top(MaskMemory& m, UInt<4> level, UInt<10> x, UInt<10> y, UInt<2> child) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_mask_memory_top(PORT, ARRAY, RESULT) \
+  RESULT(UInt<5>)                                          \
+  PORT(m, inout, ap_memory, MaskMemory&)                   \
+  PORT(level, in, ap_none, UInt<4>)                        \
+  PORT(x, in, ap_none, UInt<10>)                           \
+  PORT(y, in, ap_none, UInt<10>)                           \
+  PORT(child, in, ap_none, UInt<2>)
+inline CIG_HLS_TOP(mask_memory_top) {
   return UInt<5>(mask_set(m, int(level.value()), int(x.value()), int(y.value()), int(child.value())));
 }
 

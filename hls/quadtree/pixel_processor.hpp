@@ -20,6 +20,7 @@
 #pragma once
 
 #include "hls/quadtree/quadtree_arith.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -120,10 +121,15 @@ void quad_pixel_resolve(const QuadPixelState<P>& st, const QuadPixelTables<P>& t
 }
 
 // Top function (HLS): one pixel record into the pixel's state, default format.
-inline PixelSampleMask quadtree_pixel_top(const QuadWindow<DefaultQuadArith>& px, PixelSampleMask samples,
-                                          const QuadPixelTables<DefaultQuadArith>& t,
-                                          const QuadLightCover<DefaultQuadArith>& lights,
-                                          QuadPixelState<DefaultQuadArith>& st) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_quadtree_pixel_top(PORT, ARRAY, RESULT)        \
+  RESULT(PixelSampleMask)                                            \
+  PORT(px, in, ap_none, const QuadWindow<DefaultQuadArith>&)         \
+  PORT(samples, in, ap_none, PixelSampleMask)                        \
+  PORT(t, in, ap_memory, const QuadPixelTables<DefaultQuadArith>&)   \
+  PORT(lights, in, ap_none, const QuadLightCover<DefaultQuadArith>&) \
+  PORT(st, inout, ap_ovld, QuadPixelState<DefaultQuadArith>&)
+inline CIG_HLS_TOP(quadtree_pixel_top) {
   return quad_pixel_process(px, samples, t, lights, st);
 }
 

@@ -34,6 +34,7 @@
 
 #include "hls/formatter/records.hpp"
 #include "hls/quadtree/quadtree_arith.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -324,7 +325,13 @@ void quad_input_from_formatted(const FormattedPrimitive& f, QuadPrimitiveInput<P
 }
 
 // Top function (HLS): one formatted polygon, the default format.
-inline void quadtree_setup_top(const FormattedPrimitive& f, UInt<4> raster_log2, QuadSetup<DefaultQuadArith>& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_quadtree_setup_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                                \
+  PORT(f, in, ap_none, const FormattedPrimitive&)             \
+  PORT(raster_log2, in, ap_none, UInt<4>)                     \
+  PORT(out, out, ap_vld, QuadSetup<DefaultQuadArith>&)
+inline CIG_HLS_TOP(quadtree_setup_top) {
   QuadPrimitiveInput<DefaultQuadArith> in;
   quad_input_from_formatted(f, in);
   quadtree_setup(in, int(raster_log2.value()), out);

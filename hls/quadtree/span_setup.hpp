@@ -7,6 +7,7 @@
 
 #include "hls/formatter/span_pieces.hpp"
 #include "hls/quadtree/setup.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -82,8 +83,14 @@ void quadtree_setup_span_piece(const QuadPrimitiveInput<P>& in, const SpanPiece&
 }
 
 // Top function (HLS): the default format; false when the polygon's vertices all lie on one line.
-inline bool quadtree_span_setup_top(const FormattedPrimitive& f, const SpanPiece& piece, UInt<4> raster_log2,
-                                    QuadWindow<DefaultQuadArith>& root) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_quadtree_span_setup_top(PORT, ARRAY, RESULT) \
+  RESULT(bool)                                                     \
+  PORT(f, in, ap_none, const FormattedPrimitive&)                  \
+  PORT(piece, in, ap_none, const SpanPiece&)                       \
+  PORT(raster_log2, in, ap_none, UInt<4>)                          \
+  PORT(root, out, ap_vld, QuadWindow<DefaultQuadArith>&)
+inline CIG_HLS_TOP(quadtree_span_setup_top) {
   QuadPrimitiveInput<DefaultQuadArith> in;
   quad_input_from_formatted(f, in);
   bool ok = false;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "hls/segment/segment_arith.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -135,8 +136,13 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
 }
 
 // Top function (HLS): the default format.
-inline void edge_generator_top(const FormattedPrimitive& in, UInt<4> raster_log2,
-                               PolygonEdges<DefaultSegmentArith>& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_edge_generator_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                                \
+  PORT(in, in, ap_none, const FormattedPrimitive&)            \
+  PORT(raster_log2, in, ap_none, UInt<4>)                     \
+  PORT(out, out, ap_vld, PolygonEdges<DefaultSegmentArith>&)
+inline CIG_HLS_TOP(edge_generator_top) {
   generate_edges<DefaultSegmentArith>(in, int(raster_log2.value()), out);
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "hls/segment/segment_arith.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -83,7 +84,12 @@ bool frame_memory_read(const FrameMemory<P, K>& m, int b, int& addr, PolygonEdge
 }
 
 // Top function (HLS): one polygon into the write bank, default format.
-inline bool frame_memory_write_top(const PolygonEdges<DefaultSegmentArith>& e, FrameMemory<DefaultSegmentArith>& m) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_frame_memory_write_top(PORT, ARRAY, RESULT) \
+  RESULT(bool)                                                    \
+  PORT(e, in, ap_none, const PolygonEdges<DefaultSegmentArith>&)  \
+  PORT(m, inout, ap_memory, FrameMemory<DefaultSegmentArith>&)
+inline CIG_HLS_TOP(frame_memory_write_top) {
   return frame_memory_write(e, m);
 }
 

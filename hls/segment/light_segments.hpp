@@ -6,6 +6,7 @@
 
 #include "hls/pixel/light_coding.hpp"
 #include "hls/segment/segment_arith.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -44,8 +45,14 @@ int generate_light_segments(const FormattedPrimitive& light, int raster_log2, UI
   return count;
 }
 
-inline int light_segments_top(const FormattedPrimitive& light, UInt<4> raster_log2, UInt<3> channel,
-                              Segment<DefaultSegmentArith> (&out)[kMaxLightSegments]) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_light_segments_top(PORT, ARRAY, RESULT)              \
+  RESULT(int)                                                              \
+  PORT(light, in, ap_none, const FormattedPrimitive&)                      \
+  PORT(raster_log2, in, ap_none, UInt<4>)                                  \
+  PORT(channel, in, ap_none, UInt<3>)                                      \
+  ARRAY(out, out, ap_vld, Segment<DefaultSegmentArith>, kMaxLightSegments)
+inline CIG_HLS_TOP(light_segments_top) {
   return generate_light_segments<DefaultSegmentArith>(light, int(raster_log2.value()), channel, out);
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "hls/segment/records.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -29,7 +30,12 @@ void overload_count(const PolygonHeader<P>& h, OverloadCounts& c) {
 }
 
 // Top function: the threshold for a bank capacity (segments per field).
-inline int overload_threshold_top(const OverloadCounts& c, int bank_capacity) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_overload_threshold_top(PORT, ARRAY, RESULT) \
+  RESULT(int)                                                     \
+  PORT(c, in, ap_none, const OverloadCounts&)                     \
+  PORT(bank_capacity, in, ap_none, int)
+inline CIG_HLS_TOP(overload_threshold_top) {
   UInt<29> sum[2] = {UInt<29>(0), UInt<29>(0)};
   int threshold = 0;
   for (int k = 0; k < kAreaCodes; ++k) {

@@ -6,6 +6,7 @@
 
 #include "hls/formatter/span_pieces.hpp"
 #include "hls/segment/edge_generator.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -42,8 +43,14 @@ void generate_span_piece_edges(const FormattedPrimitiveT<Q>& in, const SpanPiece
 }
 
 // Top function (HLS): the default format.
-inline void span_piece_edges_top(const FormattedPrimitive& in, const SpanPiece& piece, UInt<4> raster_log2,
-                                 PolygonEdges<DefaultSegmentArith>& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_span_piece_edges_top(PORT, ARRAY, RESULT) \
+  RESULT(void)                                                  \
+  PORT(in, in, ap_none, const FormattedPrimitive&)              \
+  PORT(piece, in, ap_none, const SpanPiece&)                    \
+  PORT(raster_log2, in, ap_none, UInt<4>)                       \
+  PORT(out, out, ap_vld, PolygonEdges<DefaultSegmentArith>&)
+inline CIG_HLS_TOP(span_piece_edges_top) {
   generate_span_piece_edges<DefaultSegmentArith>(in, piece, int(raster_log2.value()), out);
 }
 

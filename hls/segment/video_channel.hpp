@@ -15,6 +15,7 @@
 #pragma once
 
 #include "hls/segment/y_sorter.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -257,9 +258,16 @@ int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const V
   }
   return read;
 }
-inline int video_channel_top(UInt<10> line, UInt<4> raster_log2, const SegmentMemory<DefaultSegmentArith>& m,
-                             const VideoTables<DefaultSegmentArith>& t, LineBuffer<DefaultSegmentArith>& w,
-                             PixelLine& out) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_video_channel_top(PORT, ARRAY, RESULT)        \
+  RESULT(int)                                                       \
+  PORT(line, in, ap_none, UInt<10>)                                 \
+  PORT(raster_log2, in, ap_none, UInt<4>)                           \
+  PORT(m, in, ap_memory, const SegmentMemory<DefaultSegmentArith>&) \
+  PORT(t, in, ap_memory, const VideoTables<DefaultSegmentArith>&)   \
+  PORT(w, inout, ap_memory, LineBuffer<DefaultSegmentArith>&)       \
+  PORT(out, out, ap_vld, PixelLine&)
+inline CIG_HLS_TOP(video_channel_top) {
   return render_line(int(line.value()), int(raster_log2.value()), m, t, w, out);
 }
 

@@ -6,6 +6,7 @@
 
 #include "hls/segment/overload.hpp"
 #include "hls/segment/segment_arith.hpp"
+#include "hls/types/top_ports.hpp"
 
 CIG_HLS_BEGIN_NAMESPACE
 
@@ -51,7 +52,12 @@ bool y_sort(const Segment<P>& s, SegmentMemory<P, K>& m) {
   return true;
 }
 
-inline bool y_sorter_top(const Segment<DefaultSegmentArith>& s, SegmentMemory<DefaultSegmentArith>& m) {
+// Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
+#define CIG_HLS_PORTS_y_sorter_top(PORT, ARRAY, RESULT)          \
+  RESULT(bool)                                                   \
+  PORT(s, in, ap_none, const Segment<DefaultSegmentArith>&)      \
+  PORT(m, inout, ap_memory, SegmentMemory<DefaultSegmentArith>&)
+inline CIG_HLS_TOP(y_sorter_top) {
   return y_sort(s, m);
 }
 

@@ -4,10 +4,11 @@
     check_tops.py ROOT TOPS     TOPS: the bundles' list (CIG_HLS_TOPS, ';'-separated)
     check_tops.py --self-test   the check finds planted drift
 
-The tops are the `inline ... NAME_top(` definitions under ROOT/hls/. Each must be in TOPS and
-have its synthesis top (verif/hls_export/syn/NAME.cpp), its testbench (verif/hls_export/tb/
-tb_NAME.cpp) and its golden vectors (verif/golden/hls/NAME.vec), and nothing else may name a
-bundle. hls/README.md's "`tools/hls_export.sh all OUTDIR` writes all N" must give the count, and
+The tops are the `inline ... NAME_top(` and `inline CIG_HLS_TOP(NAME_top)` definitions under
+ROOT/hls/. Each must be in TOPS and have its port table (`#define CIG_HLS_PORTS_NAME_top(`, the
+signature the synthesis top and the testbench are expanded from: hls/types/top_ports.hpp), its
+testbench case (verif/hls_export/tb/NAME_top.hpp) and its golden vectors
+(verif/golden/hls/NAME_top.vec), and nothing else may name a bundle. hls/README.md's "`tools/hls_export.sh all OUTDIR` writes all N" must give the count, and
 its bundle table (rows "| `NAME` | stage | vectors | ...") must list every top once with the
 number of vectors its file holds.
 """
@@ -16,21 +17,26 @@ import re
 import sys
 import tempfile
 
-TOP_DEF = re.compile(r"^\s*inline\b[^;{}()]*?\b([A-Za-z_]\w*_top)\s*\(", re.MULTILINE)
+TOP_DEF = re.compile(r"^\s*inline\b[^;{}()]*?\b(?:CIG_HLS_TOP\(\s*)?([A-Za-z_]\w*_top)\s*[()]", re.MULTILINE)
+PORT_TABLE = re.compile(r"^#define CIG_HLS_PORTS_([A-Za-z_]\w*_top)\(", re.MULTILINE)
 FIGURE = re.compile(r"`tools/hls_export\.sh all OUTDIR` writes all (\S+?)[ ,.;]")
 TABLE_ROW = re.compile(r"^\|\s*`([A-Za-z_]\w*_top)`\s*\|[^|]*\|\s*(\d+)\s*\|", re.MULTILINE)
 
 
-def hls_tops(root):
-    tops = {}
+def hls_definitions(root, pattern):
+    found = {}
     for folder, _, files in os.walk(os.path.join(root, "hls")):
         for name in sorted(files):
             if name.endswith(".hpp"):
                 path = os.path.join(folder, name)
                 with open(path, encoding="utf-8") as f:
-                    for top in TOP_DEF.findall(f.read()):
-                        tops.setdefault(top, os.path.relpath(path, root))
-    return tops
+                    for top in pattern.findall(f.read()):
+                        found.setdefault(top, os.path.relpath(path, root))
+    return found
+
+
+def hls_tops(root):
+    return hls_definitions(root, TOP_DEF)
 
 
 def stems(folder, prefix, suffix):
@@ -79,8 +85,9 @@ def check(root, bundle_list):
     want = set(tops)
     export = os.path.join(root, "verif", "hls_export")
     compare("entry in CIG_HLS_TOPS (verif/hls_export/CMakeLists.txt)", set(bundle_list), want, problems)
-    compare("synthesis top verif/hls_export/syn/TOP.cpp", stems(os.path.join(export, "syn"), "", ".cpp"), want, problems)
-    compare("testbench verif/hls_export/tb/tb_TOP.cpp", stems(os.path.join(export, "tb"), "tb_", ".cpp"), want, problems)
+    compare("port table CIG_HLS_PORTS_TOP in hls/", set(hls_definitions(root, PORT_TABLE)), want, problems)
+    cases = {t + "_top" for t in stems(os.path.join(export, "tb"), "", "_top.hpp")}
+    compare("testbench case verif/hls_export/tb/TOP.hpp", cases, want, problems)
     golden = os.path.join(root, "verif", "golden", "hls")
     compare("golden vectors verif/golden/hls/TOP.vec", stems(golden, "", ".vec"), want, problems)
     readme_problems(root, tops, problems)
@@ -95,11 +102,12 @@ def write(path, text):
 
 
 def make_tree(root, readme_count="2", table=None):
-    write(f"{root}/hls/a/one.hpp", "inline void one_top(int x) {}\n")
-    write(f"{root}/hls/b/two.hpp", "template <int W>\nvoid helper();\ninline int\ntwo_top(const int& y) { return y; }\n")
+    write(f"{root}/hls/a/one.hpp", "#define CIG_HLS_PORTS_one_top(PORT, ARRAY, RESULT) RESULT(void)\n"
+          "inline CIG_HLS_TOP(one_top) {}\n")
+    write(f"{root}/hls/b/two.hpp", "template <int W>\nvoid helper();\n#define CIG_HLS_PORTS_two_top(P, A, R) R(int)\n"
+          "inline int\ntwo_top(const int& y) { return y; }\n")
     for top, n in (("one_top", 2), ("two_top", 1)):
-        write(f"{root}/verif/hls_export/syn/{top}.cpp", "")
-        write(f"{root}/verif/hls_export/tb/tb_{top}.cpp", "")
+        write(f"{root}/verif/hls_export/tb/{top}.hpp", "")
         write(f"{root}/verif/golden/hls/{top}.vec", f"top {top}\n" + "> 1\n< 2\n" * n)
     rows = table if table is not None else "| `one_top` | A | 2 | x |\n| `two_top` | B | 1 | y |\n"
     write(f"{root}/hls/README.md",
@@ -113,10 +121,12 @@ def self_test():
         ("a top without a bundle", lambda r: write(f"{r}/hls/c/three.hpp", "inline void three_top() {}\n"), tops,
          "three_top: no entry in CIG_HLS_TOPS"),
         ("a bundle of no top", lambda r: None, tops + ["gone_top"], "gone_top: entry in CIG_HLS_TOPS"),
-        ("a missing synthesis top", lambda r: os.remove(f"{r}/verif/hls_export/syn/two_top.cpp"), tops,
-         "two_top: no synthesis top"),
-        ("a missing testbench", lambda r: os.remove(f"{r}/verif/hls_export/tb/tb_one_top.cpp"), tops,
-         "one_top: no testbench"),
+        ("a top without its port table", lambda r: write(f"{r}/hls/b/two.hpp", "inline int two_top(int y) {}\n"),
+         tops, "two_top: no port table"),
+        ("a port table of no top", lambda r: write(f"{r}/hls/c/t.hpp", "#define CIG_HLS_PORTS_six_top(P, A, R)\n"),
+         tops, "six_top: port table CIG_HLS_PORTS_TOP in hls/ of a top"),
+        ("a missing testbench case", lambda r: os.remove(f"{r}/verif/hls_export/tb/one_top.hpp"), tops,
+         "one_top: no testbench case"),
         ("missing vectors", lambda r: os.remove(f"{r}/verif/golden/hls/one_top.vec"), tops,
          "one_top: no golden vectors"),
         ("a stale figure", lambda r: make_tree(r, readme_count="fifteen"), tops, "'writes all fifteen'"),

@@ -86,7 +86,7 @@ hls::ManagerChannel corner_channel(std::int64_t eye, std::int64_t b_raw, std::in
 
 hls::ManagerChannelSetup setup_of(const hls::ManagerChannel& ch) {
   hls::ManagerChannelSetup s;
-  ::manager_channel_setup_top(ch, s);
+  hls::manager_channel_setup_top(ch, s);
   return s;
 }
 

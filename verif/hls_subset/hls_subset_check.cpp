@@ -830,6 +830,10 @@ class Scanner {
       } else if (ts[i].kind == Token::kIdent && x.size() > 4 && ends_with(x, "_top") && text(i + 1) == "(" &&
                  std::all_of(stack.begin(), stack.end(), [](Kind k) { return k == kNamespace; })) {
         if (is_definition(i + 1)) tops.push_back({x, ts[i].line});
+      } else if (ts[i].kind == Token::kIdent && x == "CIG_HLS_TOP" && text(i + 1) == "(" && text(i + 3) == ")" &&
+                 text(i + 4) == "{" && ends_with(text(i + 2), "_top") &&
+                 std::all_of(stack.begin(), stack.end(), [](Kind k) { return k == kNamespace; })) {
+        tops.push_back({text(i + 2), ts[i].line});  // the signature from its port table (hls/types/top_ports.hpp)
       }
     }
   }
@@ -1094,6 +1098,7 @@ class Checker {
               "-std=c++14",  // the HLS tools' standard; a later construct is an error, rule later-standard
               "-Werror=c++17-extensions",
               "-Werror=c++20-extensions",
+              "-pedantic-errors",  // GCC reports some later constructs (nested namespaces) only as pedantic
               "-D__SYNTHESIS__",
               "-UCIG_HLS_SYSTEMC",
               "-I" + (work / "poisoned").string(),

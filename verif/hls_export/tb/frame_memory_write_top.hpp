@@ -6,9 +6,9 @@
 #include "fields_segment.hpp"
 #include "hls/segment/frame_memory.hpp"
 #include "hls/segment/segment_arith.hpp"
+#include "top_case.hpp"
 
-bool frame_memory_write_top(const cig::hls::PolygonEdges<cig::hls::DefaultSegmentArith>& e,
-                            cig::hls::FrameMemory<cig::hls::DefaultSegmentArith>& m);
+CIG_TB_PORTS(frame_memory_write_top)
 
 namespace cig {
 namespace hls_tb {
@@ -29,8 +29,9 @@ struct Fields<hls::FrameMemory<P, K>> {
   }
 };
 
-struct FrameMemoryWriteTopCase {
-  static constexpr const char* kTop = "frame_memory_write_top";
+namespace frame_memory_write_top_tb {
+
+struct Case : Ports {
   static constexpr int kCalls = 48;
   using Memory = hls::FrameMemory<hls::DefaultSegmentArith>;
   struct Input {
@@ -47,13 +48,10 @@ struct FrameMemoryWriteTopCase {
     for (int k = 0; k < i.calls && k < kCalls; ++k)
       o.written[k] = CIG_TB_DESIGN(frame_memory_write_top)(i.e[k], o.memory);
   }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("e", "in", "const PolygonEdges<DefaultSegmentArith>&", i.e[0]);
-    v("m", "inout", "FrameMemory<DefaultSegmentArith>&", i.memory);
-    v("return", "out", "bool", o.written[0]);
-  }
 };
+
+}  // namespace frame_memory_write_top_tb
+using FrameMemoryWriteTopCase = frame_memory_write_top_tb::Case;
 template <>
 struct Fields<FrameMemoryWriteTopCase::Input> {
   template <class V, class R>

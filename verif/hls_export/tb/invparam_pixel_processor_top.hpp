@@ -6,11 +6,9 @@
 #pragma once
 
 #include "hls/invparam/pixel_processor.hpp"
-#include "vector_io.hpp"
+#include "top_case.hpp"
 
-cig::hls::PpOutputs<cig::hls::kPpTopWordBits> invparam_pixel_processor_top(
-    cig::hls::PpState<cig::hls::kPpTopWordBits>& st, const cig::hls::Word<cig::hls::kPpTopWordBits>& input,
-    const cig::hls::PpCtrl& ctrl);
+CIG_TB_PORTS(invparam_pixel_processor_top)
 
 namespace cig {
 namespace hls_tb {
@@ -47,8 +45,9 @@ struct Fields<hls::PpOutputs<W>> {
   }
 };
 
-struct InvparamPixelProcessorTopCase {
-  static constexpr const char* kTop = "invparam_pixel_processor_top";
+namespace invparam_pixel_processor_top_tb {
+
+struct Case : Ports {
   static constexpr int kCalls = 48;
   static constexpr int W = hls::kPpTopWordBits;
   struct Input {
@@ -68,14 +67,10 @@ struct InvparamPixelProcessorTopCase {
       o.state[k] = st;
     }
   }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("st", "inout", "PpState<64>&", i.state);
-    v("input", "in", "const Word<64>&", i.input[0]);
-    v("ctrl", "in", "const PpCtrl&", i.ctrl[0]);
-    v("return", "out", "PpOutputs<64>", o.result[0]);
-  }
 };
+
+}  // namespace invparam_pixel_processor_top_tb
+using InvparamPixelProcessorTopCase = invparam_pixel_processor_top_tb::Case;
 template <>
 struct Fields<InvparamPixelProcessorTopCase::Input> {
   template <class V, class R>

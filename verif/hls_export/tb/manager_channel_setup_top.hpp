@@ -3,41 +3,7 @@
 #pragma once
 
 #include "fields_manager.hpp"
+#include "hls/manager/channel_setup.hpp"
+#include "top_case.hpp"
 
-void manager_channel_setup_top(const cig::hls::ManagerChannel& in, cig::hls::ManagerChannelSetup& out);
-
-namespace cig {
-namespace hls_tb {
-
-struct ManagerChannelSetupTopCase {
-  static constexpr const char* kTop = "manager_channel_setup_top";
-  struct Input {
-    hls::ManagerChannel in;
-  };
-  struct Output {
-    hls::ManagerChannelSetup out;
-  };
-  static void run(const Input& i, Output& o) { CIG_TB_DESIGN(manager_channel_setup_top)(i.in, o.out); }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("in", "in", "const ManagerChannel&", i.in);
-    v("out", "out", "ManagerChannelSetup&", o.out);
-  }
-};
-template <>
-struct Fields<ManagerChannelSetupTopCase::Input> {
-  template <class V, class R>
-  static void visit(V& v, R& r) {
-    v(r.in, "in");
-  }
-};
-template <>
-struct Fields<ManagerChannelSetupTopCase::Output> {
-  template <class V, class R>
-  static void visit(V& v, R& r) {
-    v(r.out, "out");
-  }
-};
-
-}  // namespace hls_tb
-}  // namespace cig
+CIG_TB_CALL_CASE(ManagerChannelSetupTopCase, manager_channel_setup_top)

@@ -4,10 +4,9 @@
 #pragma once
 
 #include "hls/quadtree/mask_memory.hpp"
-#include "vector_io.hpp"
+#include "top_case.hpp"
 
-cig::hls::UInt<5> mask_memory_top(cig::hls::MaskMemory& m, cig::hls::UInt<4> level, cig::hls::UInt<10> x,
-                                  cig::hls::UInt<10> y, cig::hls::UInt<2> child);
+CIG_TB_PORTS(mask_memory_top)
 
 namespace cig {
 namespace hls_tb {
@@ -20,8 +19,9 @@ struct Fields<hls::MaskMemory> {
   }
 };
 
-struct MaskMemoryTopCase {
-  static constexpr const char* kTop = "mask_memory_top";
+namespace mask_memory_top_tb {
+
+struct Case : Ports {
   static constexpr int kCalls = 96;
   struct Input {
     hls::MaskMemory memory;
@@ -39,16 +39,10 @@ struct MaskMemoryTopCase {
     for (int k = 0; k < i.calls && k < kCalls; ++k)
       o.result[k] = CIG_TB_DESIGN(mask_memory_top)(o.memory, i.level[k], i.x[k], i.y[k], i.child[k]);
   }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("m", "inout", "MaskMemory&", i.memory);
-    v("level", "in", "UInt<4>", i.level[0]);
-    v("x", "in", "UInt<10>", i.x[0]);
-    v("y", "in", "UInt<10>", i.y[0]);
-    v("child", "in", "UInt<2>", i.child[0]);
-    v("return", "out", "UInt<5>", o.result[0]);
-  }
 };
+
+}  // namespace mask_memory_top_tb
+using MaskMemoryTopCase = mask_memory_top_tb::Case;
 template <>
 struct Fields<MaskMemoryTopCase::Input> {
   template <class V, class R>

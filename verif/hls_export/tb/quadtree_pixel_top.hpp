@@ -8,12 +8,9 @@
 #include "fields_quadtree.hpp"
 #include "hls/quadtree/pixel_processor.hpp"
 #include "hls/quadtree/quadtree_arith.hpp"
+#include "top_case.hpp"
 
-cig::hls::PixelSampleMask quadtree_pixel_top(const cig::hls::QuadWindow<cig::hls::DefaultQuadArith>& px,
-                                             cig::hls::PixelSampleMask samples,
-                                             const cig::hls::QuadPixelTables<cig::hls::DefaultQuadArith>& t,
-                                             const cig::hls::QuadLightCover<cig::hls::DefaultQuadArith>& lights,
-                                             cig::hls::QuadPixelState<cig::hls::DefaultQuadArith>& st);
+CIG_TB_PORTS(quadtree_pixel_top)
 
 namespace cig {
 namespace hls_tb {
@@ -40,8 +37,9 @@ struct Fields<hls::QuadPixelTables<P>> {
   }
 };
 
-struct QuadtreePixelTopCase {
-  static constexpr const char* kTop = "quadtree_pixel_top";
+namespace quadtree_pixel_top_tb {
+
+struct Case : Ports {
   static constexpr int kCalls = 24;
   using P = hls::DefaultQuadArith;
   struct Input {
@@ -63,16 +61,10 @@ struct QuadtreePixelTopCase {
       o.state[k] = st;
     }
   }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("px", "in", "const QuadWindow<DefaultQuadArith>&", i.px[0]);
-    v("samples", "in", "PixelSampleMask", i.samples[0]);
-    v("t", "in", "const QuadPixelTables<DefaultQuadArith>&", i.tables);
-    v("lights", "in", "const QuadLightCover<DefaultQuadArith>&", i.lights);
-    v("st", "inout", "QuadPixelState<DefaultQuadArith>&", i.state);
-    v("return", "out", "PixelSampleMask", o.result[0]);
-  }
 };
+
+}  // namespace quadtree_pixel_top_tb
+using QuadtreePixelTopCase = quadtree_pixel_top_tb::Case;
 template <>
 struct Fields<QuadtreePixelTopCase::Input> {
   template <class V, class R>

@@ -1,10 +1,13 @@
 // The hand-off testbench's main, shared by every kernel: replays a golden vector file through the
-// kernel's top and compares every output bit. One file per kernel (tb_<top>.cpp) instantiates it.
+// kernel's top and compares every output bit. Each bundle's tb/tb_<top>.cpp (written by
+// tools/hls_export.sh) includes its case, <top>.hpp, and this, and instantiates CIG_TB_MAIN(<top>).
 //
-//   tb_<top> [VECTORS]   replay VECTORS (default vectors/<top>.vec); exit 0 when every vector
-//                        matches, 1 on any difference (the first differing field of each vector is
-//                        printed), 2 when the file is missing, malformed or holds no vector
-//   tb_<top> --ports     print the top's ports (direction, C++ type, bits, fields) as Markdown rows
+//   tb_<top> [VECTORS]   replay VECTORS (default vectors/<top>.vec, else <top>.vec in the folder it
+//                        runs in); exit 0 when every vector matches, 1 on any difference (the first
+//                        differing field of each vector is printed), 2 when the file is missing,
+//                        malformed or holds no vector
+//   tb_<top> --ports     print the top's ports (direction, interface, C++ type, bits, fields) as
+//                        Markdown rows
 //
 // Vector file: '#' comment lines; "top NAME"; then per vector a "> inputs" line followed by a
 // "< outputs" line, the records written as vector_io.hpp describes.
@@ -15,45 +18,10 @@
 #include <memory>
 #include <string>
 
-#include "vector_io.hpp"
+#include "top_case.hpp"
 
 namespace cig {
 namespace hls_tb {
-
-// "name bits, name NxBits, ..." of a record (of an array's element); "" for a leaf.
-template <class T>
-std::string field_summary(const T& x);
-template <class E, std::size_t N>
-std::string field_summary(const E (&x)[N], ArrayKind) {
-  return field_summary(x[0]);
-}
-template <class T>
-std::string field_summary(const T&, LeafKind) {
-  return "";
-}
-template <class T>
-std::string field_summary(const T& x, RecordKind) {
-  FieldLister lister;
-  Fields<T>::visit(lister, x);
-  std::string s;
-  for (const FieldWidth& f : lister.fields) {
-    s += s.empty() ? "" : ", ";
-    s += f.name + " " + (f.count > 1 ? std::to_string(f.count) + "x" : "") + std::to_string(f.element_bits);
-  }
-  return s;
-}
-template <class T>
-std::string field_summary(const T& x) {
-  return field_summary(x, KindOf<T>{});
-}
-
-struct PortPrinter {
-  template <class T>
-  void operator()(const char* name, const char* direction, const char* type, const T& value) {
-    std::cout << "| `" << name << "` | " << direction << " | `" << type << "` | " << bits_of(value) << " | "
-              << field_summary(value) << " |\n";
-  }
-};
 
 // Reads the next non-comment line; false at the end of the file.
 inline bool next_line(std::istream& in, std::string& line, int& number) {
@@ -109,14 +77,14 @@ int replay(const std::string& file) {
 
 template <class Case>
 int testbench_main(int argc, char** argv) {
+  // In the bundle, or where Vitis's tb.file copies it (the folder the testbench runs in).
   std::string file = std::string("vectors/") + Case::kTop + ".vec";
+  if (!std::ifstream(file)) file = std::string(Case::kTop) + ".vec";
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
     if (a == "--ports") {
-      auto input = std::make_unique<typename Case::Input>();
-      auto output = std::make_unique<typename Case::Output>();
       PortPrinter printer;
-      Case::ports(printer, *input, *output);
+      Case::ports(printer);
       return 0;
     }
     if (a.empty() || a[0] == '-' || k + 1 < argc) {
@@ -133,11 +101,11 @@ int testbench_main(int argc, char** argv) {
 
 // The testbench's main (CCS_MAIN under Catapult's SCVerify).
 #ifdef CCS_SCVERIFY
-#define CIG_TB_MAIN(Case) \
-  CCS_MAIN(int argc, char** argv) { CCS_RETURN(cig::hls_tb::testbench_main<Case>(argc, argv)); }
+#define CIG_TB_MAIN(top) \
+  CCS_MAIN(int argc, char** argv) { CCS_RETURN(cig::hls_tb::testbench_main<cig::hls_tb::top##_tb::Case>(argc, argv)); }
 #else
-#define CIG_TB_MAIN(Case) \
-  int main(int argc, char** argv) { return cig::hls_tb::testbench_main<Case>(argc, argv); }
+#define CIG_TB_MAIN(top) \
+  int main(int argc, char** argv) { return cig::hls_tb::testbench_main<cig::hls_tb::top##_tb::Case>(argc, argv); }
 #endif
 
 #ifdef CIG_HLS_SYSTEMC

@@ -5,7 +5,8 @@
 // value API.
 //
 // A record is the concatenation of its fields in the order its Fields<T>::visit names them
-// (record_fields.hpp); nothing marks a record's start or end, the reader knows the structure.
+// (fields_*.hpp; each case's inputs and outputs: top_case.hpp); nothing marks a record's start or
+// end, the reader knows the structure.
 //   Int<W>, Fixed<W, I>        signed decimal: the raw two's complement value
 //   WideInt<W> (W <= 128)      signed decimal: the W-bit two's complement value (stage F's word)
 //   UInt<W>, UFixed<W, I>      unsigned decimal: the raw value
@@ -37,10 +38,14 @@ class WideInt;
 CIG_HLS_END_NAMESPACE
 
 // The testbench calls the synthesis top through CIG_TB_DESIGN, so that Catapult's SCVerify
-// (CCS_SCVERIFY) can put the RTL in its place; Vitis HLS replaces the plain call itself.
-#ifdef CCS_SCVERIFY
+// (CCS_SCVERIFY) can put the RTL in its place; Vitis HLS replaces the plain call itself. The
+// vector generator in the source tree (CIG_TB_IN_TREE) calls the kernel in its namespace: the
+// synthesis tops exist only in the bundles (tools/hls_export.sh writes them from the port tables).
+#if defined(CCS_SCVERIFY)
 #include <mc_scverify.h>
 #define CIG_TB_DESIGN(top) CCS_DESIGN(top)
+#elif defined(CIG_TB_IN_TREE)
+#define CIG_TB_DESIGN(top) ::cig::hls::top
 #else
 #define CIG_TB_DESIGN(top) ::top
 #endif
@@ -49,7 +54,7 @@ namespace cig {
 namespace hls_tb {
 
 // Fields<T>::visit(v, r) calls v(r.field, "field") for every field of record T, in a fixed order;
-// R is T or const T. Specialised per record in record_fields.hpp and per testbench case.
+// R is T or const T. Specialised per record in fields_*.hpp and per testbench case.
 template <class T>
 struct Fields;
 

@@ -9,11 +9,9 @@
 #include "fields_segment.hpp"
 #include "hls/segment/segment_arith.hpp"
 #include "hls/segment/video_channel.hpp"
+#include "top_case.hpp"
 
-int video_channel_top(cig::hls::UInt<10> line, cig::hls::UInt<4> raster_log2,
-                      const cig::hls::SegmentMemory<cig::hls::DefaultSegmentArith>& m,
-                      const cig::hls::VideoTables<cig::hls::DefaultSegmentArith>& t,
-                      cig::hls::LineBuffer<cig::hls::DefaultSegmentArith>& w, cig::hls::PixelLine& out);
+CIG_TB_PORTS(video_channel_top)
 
 namespace cig {
 namespace hls_tb {
@@ -27,6 +25,14 @@ struct Fields<hls::VideoTables<P>> {
     v(r.polygon_planes, "polygon_planes"), v(r.fog_inverse, "fog_inverse");
   }
 };
+template <class P>
+struct Fields<hls::LineBuffer<P>> {
+  template <class V, class R>
+  static void visit(V& v, R& r) {
+    v(r.rgb, "rgb"), v(r.owned, "owned"), v(r.polygon, "polygon"), v(r.owned_mask, "owned_mask");
+    v(r.settled_mask, "settled_mask");
+  }
+};
 template <>
 struct Fields<hls::PixelLine> {
   template <class V, class R>
@@ -35,8 +41,9 @@ struct Fields<hls::PixelLine> {
   }
 };
 
-struct VideoChannelTopCase {
-  static constexpr const char* kTop = "video_channel_top";
+namespace video_channel_top_tb {
+
+struct Case : Ports {
   static constexpr int kLines = 8;
   using P = hls::DefaultSegmentArith;
   struct Input {
@@ -56,16 +63,10 @@ struct VideoChannelTopCase {
       o.result[k] = CIG_TB_DESIGN(video_channel_top)(i.line[k], i.raster_log2, i.memory, i.tables, *scratch, o.out[k]);
     }
   }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("line", "in", "UInt<10>", i.line[0]);
-    v("raster_log2", "in", "UInt<4>", i.raster_log2);
-    v("m", "in", "const SegmentMemory<DefaultSegmentArith>&", i.memory);
-    v("t", "in", "const VideoTables<DefaultSegmentArith>&", i.tables);
-    v("out", "out", "PixelLine&", o.out[0]);
-    v("return", "out", "int", o.result[0]);
-  }
 };
+
+}  // namespace video_channel_top_tb
+using VideoChannelTopCase = video_channel_top_tb::Case;
 template <>
 struct Fields<VideoChannelTopCase::Input> {
   template <class V, class R>

@@ -5,15 +5,17 @@
 
 #include "fields_segment.hpp"
 #include "hls/segment/segment_arith.hpp"
+#include "hls/segment/y_sorter.hpp"
+#include "top_case.hpp"
 
-bool y_sorter_top(const cig::hls::Segment<cig::hls::DefaultSegmentArith>& s,
-                  cig::hls::SegmentMemory<cig::hls::DefaultSegmentArith>& m);
+CIG_TB_PORTS(y_sorter_top)
 
 namespace cig {
 namespace hls_tb {
 
-struct YSorterTopCase {
-  static constexpr const char* kTop = "y_sorter_top";
+namespace y_sorter_top_tb {
+
+struct Case : Ports {
   static constexpr int kCalls = 64;
   using Memory = hls::SegmentMemory<hls::DefaultSegmentArith>;
   struct Input {
@@ -29,13 +31,10 @@ struct YSorterTopCase {
     o.memory = i.memory;
     for (int k = 0; k < i.calls && k < kCalls; ++k) o.sorted[k] = CIG_TB_DESIGN(y_sorter_top)(i.s[k], o.memory);
   }
-  template <class V>
-  static void ports(V& v, const Input& i, const Output& o) {
-    v("s", "in", "const Segment<DefaultSegmentArith>&", i.s[0]);
-    v("m", "inout", "SegmentMemory<DefaultSegmentArith>&", i.memory);
-    v("return", "out", "bool", o.sorted[0]);
-  }
 };
+
+}  // namespace y_sorter_top_tb
+using YSorterTopCase = y_sorter_top_tb::Case;
 template <>
 struct Fields<YSorterTopCase::Input> {
   template <class V, class R>

@@ -1,5 +1,0 @@
-// Hand-off testbench of span_piece_edges_top: replays its golden vectors (tb_main.hpp).
-#include "span_piece_edges_top.hpp"
-#include "tb_main.hpp"
-
-CIG_TB_MAIN(cig::hls_tb::SpanPieceEdgesTopCase)
