@@ -18,6 +18,7 @@
 #include "hls/manager/channel_setup.hpp"
 #include "hls/manager/visibility.hpp"
 #include "manager/channel_view.hpp"
+#include "manager/visibility_unit.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/world_database.hpp"
 #include "tb/manager_channel_setup_top.hpp"
@@ -27,48 +28,18 @@
 namespace cig::hls_tb {
 namespace {
 
-// Raw ranges of the formats (hls/manager/records.hpp); u = 2^-11 m.
-constexpr double kU = 1.0 / 2048;
+// The host's conversions (cmodel/manager/visibility_unit.hpp, the data path's): positions and B to
+// nearest, radius and t up, near down, clamped to the formats (the corners below reach the ends).
+constexpr double kU = 1.0 / 2048;  // u = 2^-11 m
+// Raw ends of the formats (hls/manager/records.hpp), for the hand-made corners.
 constexpr std::int64_t kWorldMin = -(std::int64_t{1} << 31), kWorldMax = (std::int64_t{1} << 31) - 1;
 constexpr std::int64_t kRadiusMax = (std::int64_t{1} << 32) - 1;
 constexpr std::int64_t kRotMin = -(std::int64_t{1} << 17), kRotMax = (std::int64_t{1} << 17) - 1;
 constexpr std::int64_t kOne = std::int64_t{1} << 16;  // 1.0 in B and t
 constexpr std::int64_t kTanMax = (std::int64_t{1} << 18) - 1;
 constexpr std::int64_t kNearMax = (std::int64_t{1} << 24) - 1;
-
-std::int64_t clamp_raw(double v, std::int64_t lo, std::int64_t hi) {
-  return v < double(lo) ? lo : v > double(hi) ? hi : std::int64_t(v);
-}
-
-// The host's conversions: positions and B to nearest, radius and t up, near down, clamped.
-hls::WorldCoord world(double metres) {
-  return hls::WorldCoord::from_raw_value(clamp_raw(std::nearbyint(metres / kU), kWorldMin, kWorldMax));
-}
-hls::WorldRadius radius(double metres) {
-  return hls::WorldRadius::from_raw_value(std::uint64_t(clamp_raw(std::ceil(metres / kU), 0, kRadiusMax)));
-}
-
-hls::ManagerChannel channel_of(const ChannelView& v) {
-  hls::ManagerChannel ch;
-  for (int i = 0; i < 3; ++i) {
-    ch.eye[i] = world(v.eye[i]);
-    // glm is column-major: row i (eye axis) of B, column j (world axis) is world_to_eye[j][i].
-    for (int j = 0; j < 3; ++j)
-      ch.b[i][j] =
-          hls::RotationEntry::from_raw_value(clamp_raw(std::nearbyint(v.world_to_eye[j][i] * kOne), kRotMin, kRotMax));
-  }
-  ch.tan_half_fov =
-      hls::TanHalfFov::from_raw_value(std::uint64_t(clamp_raw(std::ceil(v.tan_half_fov * kOne), 0, kTanMax)));
-  ch.near = hls::NearDistance::from_raw_value(std::uint64_t(clamp_raw(std::floor(v.near / kU), 0, kNearMax)));
-  return ch;
-}
-
-hls::ManagerObject sphere(const glm::dvec3& centre, double r) {
-  hls::ManagerObject o;
-  for (int i = 0; i < 3; ++i) o.centre[i] = world(centre[i]);
-  o.radius = radius(r);
-  return o;
-}
+hls::ManagerChannel channel_of(const ChannelView& v) { return host_manager_channel(v).channel; }
+hls::ManagerObject sphere(const glm::dvec3& centre, double r) { return host_manager_object(centre, r).object; }
 
 // A hand-made channel: eye at `eye` (raw, every axis), B = b_raw on the diagonal and off_raw off it,
 // t and near raw.
