@@ -5,7 +5,7 @@
 // cig arch --processor invparam [--faces-per-object M] [--objects N1,N2,..] [--columns P]
 //          [--pps N_n] [--clock-ns T] [--widths W1,W2,..] [--report FILE.json]
 // Seed 004's architecture analysis, measured with the project's kernels and cycle model
-// (cmodel/quadtree/arch_analysis.hpp; discussion and results: hls/quadtree/ARCHITECTURES.md):
+// (cmodel/studies/arch_analysis.hpp; discussion and results: hls/quadtree/ARCHITECTURES.md):
 //   nArch        eq. 10's N_arch for n = 10 beside Architecture::pe_count and the seed's table;
 //   windows      w_i(S) of rectangles (aspects x {0, 45 degrees} x areas) against eq. 2-3;
 //   performance  clocks per polygon, P/P_max, speed-up over the stack, eq. 9's load R(S) and the
@@ -29,7 +29,7 @@
 
 #include "common/error.hpp"
 #include "image/image.hpp"
-#include "quadtree/arch_analysis.hpp"
+#include "studies/arch_analysis.hpp"
 
 namespace cig::cli {
 
