@@ -1,7 +1,7 @@
 // Seed 004's architectures (SPEC E): the eq. 1 parser, eq. 10's PE counts, the window counts of
 // eq. 2-3 measured with the setup and PE kernels, and the cycle model (quad::ArchModel) on cases
 // small enough to derive by hand. cmodel/studies/arch_analysis.hpp holds the code under test;
-// hls/quadtree/ARCHITECTURES.md the discussion.
+// docs/results/architecture.md the discussion.
 #include <gtest/gtest.h>
 
 #include <algorithm>
