@@ -19,8 +19,8 @@ never creates a page and never writes any other file: a page without the markers
 STUDIES gives it is refused (exit 2), and so is a file in --out DIR that is not such a page.
 
   --only NAME    only these studies (default: all)
-  --long         also the blocks that take minutes (word_length.l2048, about 4 min; the four
-                 run_time_vs_error sweeps, about 10 min); without it they are left as they are
+  --long         also the blocks that take minutes (word_length.l2048, 4 to 12 min; the four
+                 run_time_vs_error sweeps, estimated at 10 min or more); without it they are left as they are
   --check        write nothing: compare each block's output with the page (times, which vary from
                  run to run, are masked) and exit 1 on any difference
   --out DIR      write the regenerated pages into DIR instead of docs/results/
