@@ -5,7 +5,7 @@
 // cig arch --processor invparam [--faces-per-object M] [--objects N1,N2,..] [--columns P]
 //          [--pps N_n] [--clock-ns T] [--widths W1,W2,..] [--report FILE.json]
 // Seed 004's architecture analysis, measured with the project's kernels and cycle model
-// (cmodel/quadtree/arch_analysis.hpp; discussion and results: hls/quadtree/ARCHITECTURES.md):
+// (cmodel/studies/arch_analysis.hpp; discussion and results: docs/results/architecture.md):
 //   nArch        eq. 10's N_arch for n = 10 beside Architecture::pe_count and the seed's table;
 //   windows      w_i(S) of rectangles (aspects x {0, 45 degrees} x areas) against eq. 2-3;
 //   performance  clocks per polygon, P/P_max, speed-up over the stack, eq. 9's load R(S) and the
@@ -29,7 +29,7 @@
 
 #include "common/error.hpp"
 #include "image/image.hpp"
-#include "quadtree/arch_analysis.hpp"
+#include "studies/arch_analysis.hpp"
 
 namespace cig::cli {
 
@@ -127,7 +127,7 @@ void print_pe_table(ordered_json& report) {
                     {"seed_table", r.seed_printed},
                     {"agree", ok}});
   }
-  std::printf("%s (SPEC.md's 87,381 and 21,845 are the trees alone: hls/quadtree/ARCHITECTURES.md, Table 1)\n\n",
+  std::printf("%s (SPEC.md's 87,381 and 21,845 are the trees alone: docs/results/architecture.md, Table 1)\n\n",
               all_ok ? "eq. 10, Architecture::pe_count() and the seed's table agree for every i."
                      : "MISMATCH: see the rows marked DIFFER.");
   report["n_arch"] = {{"n", 10}, {"rows", rows}, {"all_agree", all_ok}};
@@ -208,7 +208,7 @@ ordered_json window_table(const ArchCommand& c, const std::vector<quad::TestRect
       1 << n, n, c.positions);
   std::printf(
       "bound: eq. 2 with L = %.3f, alpha = beta = 3/4 pixel; '!' mean above the bound by > 3 se, '~' within 3 se.\n"
-      "The columns, E_area, E_cons and why some rows exceed eq. 2: hls/quadtree/ARCHITECTURES.md, Table 2.\n",
+      "The columns, E_area, E_cons and why some rows exceed eq. 2: docs/results/architecture.md, Table 2.\n",
       quad::kSeedShapeFactor);
   ordered_json jt = ordered_json::array();
   ExceedCounts counts;
@@ -354,7 +354,7 @@ ordered_json performance_table(const ArchCommand& c, const std::vector<Architect
   std::printf(
       "Stream: %d opaque %s rectangles per area at random positions, masks off, FIFO depth %d; p = P/P_max with\n"
       "P_max = 1/4 polygon per clock; meas: the cycle model, eq: eq. 5-8 with the measured w_i; R = eq. 9's load.\n"
-      "Timing model, columns and discussion: hls/quadtree/ARCHITECTURES.md, Table 3.\n",
+      "Timing model, columns and discussion: docs/results/architecture.md, Table 3.\n",
       c.stream, rects.front().label().c_str(), c.fifo);
   std::printf("%6s %-9s %7s %9s %9s %7s %7s %8s %8s %8s %8s %7s %7s\n", "S", "arch", "N_arch", "clk/poly", "eq", "p",
               "p eq", "speedup", "sp eq", "R", "R eq", "util", "stall%");

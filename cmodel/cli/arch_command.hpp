@@ -1,5 +1,5 @@
 // `cig arch` (arch_command.cpp): the architecture analysis of seed 004 (eq. 2-10), measured with
-// the project's setup and PE kernels and its cycle model (cmodel/quadtree/arch_analysis.hpp);
+// the project's setup and PE kernels and its cycle model (cmodel/studies/arch_analysis.hpp);
 // with --processor invparam, seed 002's frame time and faces/s (arch_invparam.cpp).
 #pragma once
 

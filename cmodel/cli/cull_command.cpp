@@ -1,17 +1,16 @@
 // cig cull SCENE [--frame K | --frames A:B] [--near D] [--far D] [--repeat R] [--report FILE]
+// The study (cmodel/studies/culling_study.hpp) runs the methods; this prints its table and report.
 #include "cli/cull_command.hpp"
 
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
-#include "common/timing.hpp"
 #include "image/image.hpp"
-#include "manager/scene_manager.hpp"
 #include "scene/scene_loader.hpp"
+#include "studies/culling_study.hpp"
 
 namespace cig::cli {
 
@@ -32,40 +31,12 @@ void CullCommand::add_to(CLI::App& app) {
 
 namespace {
 
-struct CullRow {
-  CullMethod method;
-  std::uint64_t nodes_visited = 0, nodes_kept = 0, objects_kept = 0, visible = 0, false_negatives = 0,
-                false_positives = 0;
-  double ms = 0;  // sum over channels of the best time (tree walk and the kept objects' sphere tests)
-};
-
-// One method on one channel: the best of `repeat` runs, and its visible set.
-std::vector<std::uint32_t> run_method(const WorldDatabase& db, const ChannelView& view, const ManagerOptions& options,
-                                      int repeat, CullRow& row) {
-  std::vector<std::uint32_t> ids;
-  double best = std::numeric_limits<double>::infinity();
-  SceneManagerStats kept;
-  for (int r = 0; r < repeat; ++r) {
-    SceneManagerStats st;
-    const auto t0 = Clock::now();
-    ids = potentially_visible(db, view, options, st);
-    best = std::min(best, ms_since(t0));
-    kept = st;
-  }
-  row.ms += best;
-  row.nodes_visited += kept.cull.nodes_visited;
-  row.nodes_kept += kept.cull.nodes_kept;
-  row.objects_kept += options.tree ? kept.cull.objects_kept : db.objects.size();
-  row.visible += ids.size();
-  return ids;
-}
-
-void print_table(const std::vector<CullRow>& rows, long channels, std::size_t objects, std::size_t nodes) {
-  std::cout << "cig cull: " << objects << " objects, " << nodes << " quadtree nodes, " << channels
+void print_table(const CullingStudy& s) {
+  std::cout << "cig cull: " << s.objects << " objects, " << s.nodes << " quadtree nodes, " << s.channels
             << " channel image(s); per channel (mean):\n";
   std::cout << "method          nodes visited  nodes kept  objects kept  visible  time ms  false neg  false pos\n";
-  for (const CullRow& r : rows) {
-    const double n = double(std::max(1L, channels));
+  for (const CullingRow& r : s.rows) {
+    const double n = double(std::max(1L, s.channels));
     std::cout << std::left << std::setw(15) << cull_method_name(r.method) << std::right << std::fixed
               << std::setprecision(1) << std::setw(14) << r.nodes_visited / n << std::setw(12) << r.nodes_kept / n
               << std::setw(14) << r.objects_kept / n << std::setw(9) << r.visible / n << std::setprecision(4)
@@ -85,37 +56,13 @@ int CullCommand::run() {
   if (!report_file.empty()) plan.file(report_file, "--report");
   plan.check();
   if (!(near_distance <= far_distance)) throw InputError("", "--near", "D_near must not exceed D_far");
-  const WorldDatabase db = build_world_database(scene);
-  const SceneQuadtree tree(db);
-  std::vector<CullRow> rows;
-  for (CullMethod m :
-       {CullMethod::kLineOfSight, CullMethod::kProjection, CullMethod::kHierarchical, CullMethod::kBruteForce})
-    rows.push_back({m});
-  long channels = 0;
-  for (int frame = a; frame <= b; ++frame)
-    for (int c = 0; c < int(scene.channels.size()); ++c, ++channels) {
-      const ChannelView view = make_channel_view(scene, frame, c);
-      std::vector<std::uint32_t> want;  // brute force (the last row) runs first: the others' truth
-      for (std::size_t k = 0; k < rows.size(); ++k) {
-        CullRow& row = rows[(k + rows.size() - 1) % rows.size()];
-        ManagerOptions o;
-        o.tree = row.method == CullMethod::kBruteForce ? nullptr : &tree;
-        o.culling = {row.method, near_distance, far_distance};
-        const std::vector<std::uint32_t> got = run_method(db, view, o, repeat, row);
-        if (row.method == CullMethod::kBruteForce) want = got;
-        std::vector<std::uint32_t> missing, extra;
-        std::set_difference(want.begin(), want.end(), got.begin(), got.end(), std::back_inserter(missing));
-        std::set_difference(got.begin(), got.end(), want.begin(), want.end(), std::back_inserter(extra));
-        row.false_negatives += missing.size();
-        row.false_positives += extra.size();
-      }
-    }
-  print_table(rows, channels, db.objects.size(), tree.node_count());
+  const CullingStudy study = run_culling_study(scene, {a, b, near_distance, far_distance, repeat});
+  print_table(study);
   if (!report_file.empty()) {
     nlohmann::ordered_json rep = nlohmann::ordered_json::array();
-    for (const CullRow& r : rows)
+    for (const CullingRow& r : study.rows)
       rep.push_back({{"method", cull_method_name(r.method)},
-                     {"channels", channels},
+                     {"channels", study.channels},
                      {"nodes_visited", r.nodes_visited},
                      {"nodes_kept", r.nodes_kept},
                      {"objects_kept", r.objects_kept},

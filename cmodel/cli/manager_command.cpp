@@ -1,7 +1,7 @@
 // cig manager --capacity [--clock-ns T] [--rate HZ] [--cost R=1,C=1,O=1,L=1,A=1,M=1,D=1]
 //                        [--occluded LIST] [--planes LIST] [--points LIST]
 //                        [--schedule sequence|pipeline] [--pairs neighbours|all]
-// Seed 000's scene manager as a counted model (cmodel/manager/operation_counts.hpp): the largest No
+// Seed 000's scene manager as a counted model (cmodel/studies/operation_counts.hpp): the largest No
 // one frame holds, for each Noc and object shape Npl x Np, from the model's counts and from the
 // seed's table as printed; the frame load of the seed's claim (No = 1000, Noc = 60) under each
 // assumption; and the verdict on the claim.
@@ -17,7 +17,7 @@
 #include <stdexcept>
 
 #include "common/error.hpp"
-#include "manager/operation_counts.hpp"
+#include "studies/operation_counts.hpp"
 
 namespace cig::cli {
 
@@ -157,7 +157,7 @@ std::string verdict(const CapacityQuestion& q, const std::vector<Shape>& shapes,
 void print_assumptions(const CapacityQuestion& q) {
   const bool pipelined = q.schedule == UnitSchedule::kPipeline;
   std::cout
-      << "cig manager --capacity: seed 000's scene manager as a counted model (cmodel/manager/operation_counts.hpp)\n"
+      << "cig manager --capacity: seed 000's scene manager as a counted model (cmodel/studies/operation_counts.hpp)\n"
       << "clock " << number(q.clock_mhz) << " MHz, frame rate " << number(q.frame_hz) << " Hz: " << number(q.budget())
       << " cycles a frame; cycles per operation " << costs_text(q.cost) << "\n"
       << "assumptions: "

@@ -1,5 +1,5 @@
 // `cig manager` (manager_command.cpp): the scene manager of seed 000 as a counted model
-// (cmodel/manager/operation_counts.hpp). `--capacity`: for each number of occluded objects and each
+// (cmodel/studies/operation_counts.hpp). `--capacity`: for each number of occluded objects and each
 // object shape (Npl planes of Np points), the largest number of objects one frame holds at a clock,
 // a frame rate and a cost per operation kind; then whether the seed's "about 1000 objects, 60 of
 // them occluded, at 100 MHz and 25 Hz" holds, and under which assumptions.

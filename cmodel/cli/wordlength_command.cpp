@@ -11,7 +11,7 @@
 #include "cli/gnuplot_plot.hpp"
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
-#include "invparam/word_length_study.hpp"
+#include "studies/word_length_study.hpp"
 
 namespace cig::cli {
 

@@ -1,5 +1,5 @@
 // `cig wordlength` (wordlength_command.cpp): seed 002's word-length claims tested
-// (cmodel/invparam/word_length_study.hpp): per range, method (a inverse parameter, b Z-buffer,
+// (cmodel/studies/word_length_study.hpp): per range, method (a inverse parameter, b Z-buffer,
 // c inverse Z-buffer, d exact Z rounded) and word length W, the samples with a wrong visible face,
 // with a depth error over 1 mm, the largest depth error; the smallest clean W beside the seed's.
 #pragma once

@@ -25,7 +25,7 @@
 // side of the box on which the polygon has no edge of its own, while edge slots remain. The seed
 // bounds the number of box edges by the number of acute corners; that is enough near the pixel
 // level, but a turned rectangle (no acute corner) then pays the corner windows at the coarse and
-// middle levels, above eq. 2's bound (hls/quadtree/ARCHITECTURES.md).
+// middle levels, above eq. 2's bound (docs/results/architecture.md).
 //
 // Pieces. A polygon of more than kQuadMaxEdges vertices is split into a fan of pieces from vertex
 // 0 (8 + 7 + 3 more vertices), sharing diagonals: exact and watertight by the tie rule. A polygon

@@ -4,7 +4,7 @@
 Every quoted #include of a file under cmodel/ or hls/ must resolve to a file under cmodel/ or hls/
 (so nothing in the product includes verif/, tools/ or generated code), and the folder it names must
 be one its own folder may depend on (ALLOWED below: a stage includes the stages before it, never
-after; the engines do not include each other). Exit status 1 lists every violation as
+after; the engines do not include each other; only the CLI includes the studies, cmodel/studies/). Exit status 1 lists every violation as
 FILE:LINE: rule. `--self-test` plants violations in a temporary tree and requires each to be found.
 """
 import os
@@ -51,8 +51,16 @@ ALLOWED = {
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree", "cmodel/invparam"},  # every engine
     "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
                         "cmodel/frame", "cmodel/image", "cmodel/engine", "cmodel/registry"},
+    # seed-reproduction studies: above every stage and engine, below the CLI; nothing but the CLI
+    # (and verif/) includes them, so a study can change without touching the data path
+    "cmodel/studies": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/frame", "cmodel/geometry",
+                       "cmodel/formatter", "cmodel/image", "cmodel/engine", "cmodel/pixel", "cmodel/reference",
+                       "cmodel/segment", "cmodel/quadtree", "cmodel/invparam", "hls/*"},
     "cmodel/cli": {"cmodel/*"},                                                # every command
 }
+
+STUDIES = "cmodel/studies"
+MAY_INCLUDE_STUDIES = {STUDIES, "cmodel/cli"}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
@@ -78,7 +86,7 @@ def allowed(src, dst):
     if rules is None:
         return False
     return dst in rules or (dst.startswith("cmodel/") and "cmodel/*" in rules) or (
-        dst.startswith("hls/") and src.startswith("cmodel/cli"))
+        dst.startswith("hls/") and ("hls/*" in rules or src.startswith("cmodel/cli")))
 
 
 def check(root):
@@ -104,7 +112,10 @@ def check(root):
                                             "under cmodel/ or hls/")
                             continue
                         dst = folder_of(target)
-                        if not allowed(src, dst):
+                        if dst == STUDIES and src not in MAY_INCLUDE_STUDIES:
+                            problems.append(f"{rel}:{line_no}: studies: {src} must not include {target} "
+                                            "(studies depend on the stages, never the other way)")
+                        elif not allowed(src, dst):
                             problems.append(f"{rel}:{line_no}: layer: {src} must not include {target}")
     return problems
 
@@ -116,14 +127,21 @@ def self_test():
         "cmodel/cli/bad.cpp": '#include "quadtree/cosim.hpp"\n',       # product -> verif
         "hls/quadtree/bad.hpp": '#include "hls/segment/x.hpp"\n',
         "hls/formatter/bad.hpp": '#include "hls/segment/x.hpp"\n',     # ground -> stage D
+        "cmodel/manager/bad.cpp": '#include "studies/s.hpp"\n',       # stage -> study
+        "cmodel/registry/bad.cpp": '#include "studies/s.hpp"\n',      # registry -> study
     }
+    accepted = {"cmodel/cli/ok.cpp": '#include "studies/s.hpp"\n',      # the CLI runs studies
+                "cmodel/studies/s.hpp": '#include "quadtree/q.hpp"\n'}   # a study uses the stages
     with tempfile.TemporaryDirectory() as root:
-        for rel in ["hls/segment/x.hpp", "cmodel/reference/r.hpp", "verif/cosim/quadtree/cosim.hpp"] + list(planted):
+        for rel in ["hls/segment/x.hpp", "cmodel/reference/r.hpp", "cmodel/quadtree/q.hpp",
+                    "verif/cosim/quadtree/cosim.hpp"] + list(planted) + list(accepted):
             os.makedirs(os.path.join(root, os.path.dirname(rel)), exist_ok=True)
             with open(os.path.join(root, rel), "w") as f:
-                f.write(planted.get(rel, ""))
+                f.write(planted.get(rel, accepted.get(rel, "")))
         found = check(root)
     missed = [rel for rel in planted if not any(p.startswith(rel + ":") for p in found)]
+    missed += [rel for rel in planted if '"studies/' in planted[rel] and not any(
+        p.startswith(rel + ":") and ": studies: " in p for p in found)]  # named by its own rule
     if missed or len(found) != len(planted):
         print("self-test failed: planted", sorted(planted), "found", found)
         return 1

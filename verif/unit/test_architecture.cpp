@@ -1,7 +1,7 @@
 // Seed 004's architectures (SPEC E): the eq. 1 parser, eq. 10's PE counts, the window counts of
 // eq. 2-3 measured with the setup and PE kernels, and the cycle model (quad::ArchModel) on cases
-// small enough to derive by hand. cmodel/quadtree/arch_analysis.hpp holds the code under test;
-// hls/quadtree/ARCHITECTURES.md the discussion.
+// small enough to derive by hand. cmodel/studies/arch_analysis.hpp holds the code under test;
+// docs/results/architecture.md the discussion.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,9 +12,9 @@
 #include "common/error.hpp"
 #include "hls/quadtree/mask_memory.hpp"
 #include "hls/quadtree/pe.hpp"
-#include "quadtree/arch_analysis.hpp"
 #include "quadtree/arch_model.hpp"
 #include "quadtree/architecture.hpp"
+#include "studies/arch_analysis.hpp"
 
 namespace cig::quad {
 namespace {

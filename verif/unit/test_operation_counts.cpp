@@ -1,5 +1,5 @@
 // Seed 000's operation-count table against the counted model of the scene manager
-// (cmodel/manager/operation_counts.hpp):
+// (cmodel/studies/operation_counts.hpp):
 //  * over random scenes of the table's structure (No 1..5000, Noc 0..No, Npl 1..64, Np 3..16), the
 //    counts by kind of each unit, from RUNNING the three units, equal the table's formulas, written
 //    out below as printed in the seed (shared/seeds/000, section 5), for every self-consistent
@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "manager/operation_counts.hpp"
+#include "studies/operation_counts.hpp"
 
 namespace cig {
 

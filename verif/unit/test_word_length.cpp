@@ -1,4 +1,4 @@
-// Stage F's word-length study (cmodel/invparam/word_length_study.hpp), reduced (4 views, a 64 x 64
+// Stage F's word-length study (cmodel/studies/word_length_study.hpp), reduced (4 views, a 64 x 64
 // lattice): what follows from the derivation of the inverse parameter's bound, not tuned numbers.
 //  * At the derived W (8 + log2(2 L R^2 / 1 mm)) the kernel (method a) gives no wrong face and no
 //    depth error over 1 mm, at 10 km and at 100 km.
@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "invparam/word_length_study.hpp"
+#include "studies/word_length_study.hpp"
 
 namespace cig {
 namespace {

@@ -1,4 +1,4 @@
-#include "invparam/word_length_study.hpp"
+#include "studies/word_length_study.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 // The architecture analysis of seed 004 (SPEC E), measured with the project's own kernels and
 // cycle model: `cig arch` (cmodel/cli/arch_command.cpp) prints it, verif/unit/test_architecture.cpp
-// checks it, hls/quadtree/ARCHITECTURES.md discusses it.
+// checks it, docs/results/architecture.md discusses it.
 //
 //  * eq. 10: the PE count N_arch of the pipeline-trees (i-1)p(n-i+1)t beside Architecture::pe_count.
 //  * eq. 2-3: the bound on w_i(S), the windows a polygon of area S pixels covers at level i, beside

@@ -1,4 +1,4 @@
-#include "quadtree/arch_analysis.hpp"
+#include "studies/arch_analysis.hpp"
 
 #include <algorithm>
 #include <cmath>

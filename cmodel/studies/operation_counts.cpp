@@ -7,7 +7,7 @@
 //     of the subobject sorter's decisions; these are charged per step as one figure (the comment
 //     says how the unit total is split between steps: that split is this model's, chosen so that
 //     every step's count is non-negative and the totals equal the table).
-#include "manager/operation_counts.hpp"
+#include "studies/operation_counts.hpp"
 
 #include <algorithm>
 #include <cmath>
