@@ -163,9 +163,8 @@ int CompareCommand::run() {
   const EngineOptions eo = engine.options();
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = eo.fan_split;  // the reference follows the engine's polygon split
-  const FrameJobs jobs =
-      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
-                      manager_unit.arith());
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel,
+                                         model_limit.limits(), manager_unit.arith());
   jobs.check_capacity(*make_engine(engine.engine, eo));
   if (html) prepare_compare_html(out_dir, report_file);
   OutputPlan plan;

@@ -39,8 +39,10 @@ std::string engine_text(const EngineInfo& e) {
   for (std::size_t k = 0; k < d.size(); ++k) t << (k ? ", " : "") << d[k];
   t << "\n";
   if (*e.can.twin_of) t << "  twin of: " << e.can.twin_of << " (the same kernels on double arithmetic)\n";
-  if (*e.can.hardware_model) t << "  hardware model: " << e.can.hardware_model << ", co-simulated against it by cig cosim\n";
-  if (e.can.reference) t << "  the reference: --reference " << e.name << ", " << e.name << "-snap, " << e.name << "-snap-priority\n";
+  if (*e.can.hardware_model)
+    t << "  hardware model: " << e.can.hardware_model << ", co-simulated against it by cig cosim\n";
+  if (e.can.reference)
+    t << "  the reference: --reference " << e.name << ", " << e.name << "-snap, " << e.name << "-snap-priority\n";
   if (e.can.reference) t << "  --snap: snap vertex positions to the formatter grid first (exact depth planes kept)\n";
   t << "  --engine-opt settings:" << (e.options.empty() ? " none" : "") << "\n";
   std::size_t width = 0;

@@ -6,8 +6,8 @@
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "common/json_reader.hpp"
-#include "registry/engine_registry.hpp"
 #include "frame/input_kind.hpp"
+#include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cli {
@@ -18,7 +18,8 @@ EngineOptions reference_options(const std::string& reference, int samples_per_pi
   // engines have it.
   const std::string r = reference_engine_name();
   if (reference != r && reference != r + "-snap" && reference != r + "-snap-priority")
-    throw InputError("", "--reference", "'" + reference + "' is none of " + r + ", " + r + "-snap, " + r + "-snap-priority");
+    throw InputError("", "--reference",
+                     "'" + reference + "' is none of " + r + ", " + r + "-snap, " + r + "-snap-priority");
   EngineOptions o;
   o.snap = reference != r;
   if (reference == r + "-snap-priority") o.params["visibility"] = "priority";
@@ -55,7 +56,7 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
       if (channel < 0 || c == channel) j.jobs_.push_back({f, c});
   j.frames_ = b - a + 1;
   j.channels_ = channel < 0 ? int(j.scene_->channels.size()) : 1;
-  j.pipeline_ = std::make_unique<ScenePipeline>(*j.scene_, CullSettings{}, visibility);
+  j.pipeline_ = std::make_unique<ImageGenerator>(*j.scene_, CullSettings{}, visibility);
   return j;
 }
 

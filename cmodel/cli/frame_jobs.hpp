@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
+#include "generator/image_generator.hpp"
 #include "image/image_compare.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cli {
@@ -55,7 +55,7 @@ class FrameJobs {
   std::string input_;              // the file, for errors
   std::vector<ScreenFrame> list_;  // polygon-list input
   std::unique_ptr<Scene> scene_;
-  std::unique_ptr<ScenePipeline> pipeline_;
+  std::unique_ptr<ImageGenerator> pipeline_;
   std::vector<std::pair<int, int>> jobs_;  // (frame, channel)
   int frames_ = 1, channels_ = 1;
 };

@@ -5,8 +5,8 @@
 
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
+#include "generator/image_generator.hpp"
 #include "image/image.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cli {
@@ -33,7 +33,7 @@ int PolysCommand::run() {
   plan.scene_inputs(scene);
   plan.file(out_file, "--out");
   plan.check();
-  const ScenePipeline pipeline(scene, {}, manager_unit.arith());
+  const ImageGenerator pipeline(scene, {}, manager_unit.arith());
   nlohmann::ordered_json rep;
   const ScreenFrame f = pipeline.geometry(frame, channel, rep);
   write_text_file(out_file, polygon_list_json(f));

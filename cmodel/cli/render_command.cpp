@@ -12,8 +12,8 @@
 
 #include "cli/output_plan.hpp"
 #include "common/progress.hpp"
+#include "generator/image_generator.hpp"
 #include "image/image.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cli {
@@ -115,7 +115,7 @@ void check_frames(const Scene& scene, int a, int b, const std::vector<int>& chan
                   const EngineOptions& eo, VisibilityArith visibility) {
   if (!scene_exceeds_ids(scene)) return;
   const auto checker = make_engine(engine, eo);
-  const ScenePipeline pipeline(scene, {}, visibility);
+  const ImageGenerator pipeline(scene, {}, visibility);
   for (int frame = a; frame <= b; ++frame)
     for (int c : channels) {
       nlohmann::ordered_json unused;
@@ -172,7 +172,7 @@ int RenderCommand::run() {
   std::filesystem::create_directories(out_dir);
 
   // Phase 2: the frames.
-  const ScenePipeline pipeline(scene, {}, manager_unit.arith());
+  const ImageGenerator pipeline(scene, {}, manager_unit.arith());
   nlohmann::ordered_json report = render_report(*this, scene, eo, load_ms);
   const auto t_all = Clock::now();
   Progress progress("cig render", b - a + 1);

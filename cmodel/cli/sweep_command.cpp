@@ -265,9 +265,8 @@ int SweepCommand::run() {
   const std::vector<Combination> combos = combinations(varied, base);
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = base.fan_split;  // the reference follows the engines' polygon split
-  const FrameJobs jobs =
-      FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
-                      manager_unit.arith());
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel,
+                                         model_limit.limits(), manager_unit.arith());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, combos);
   for (std::size_t v = 0; v < engines.size(); ++v) {
     try {

@@ -364,18 +364,19 @@ const EngineDeclaration& invparam_engine_declaration(bool twin) {
   EngineCapabilities fixed;
   fixed.bit_accurate = fixed.polyhedra = true;
   fixed.hardware_model = "rtl/invparam (ip_array)";
-  EngineCapabilities double_twin = fixed;
-  double_twin.bit_accurate = false;
-  double_twin.hardware_model = "";
-  double_twin.twin_of = "invparam";
   static const EngineDeclaration kFixed{
-      "invparam", "stage F: seed 002's inverse-parameter visibility processor (1/t per sample, systolic array)", fixed,
+      "invparam",
+      "stage F: seed 002's inverse-parameter visibility processor (1/t per sample, systolic array)",
+      fixed,
       [](const EngineOptions& o) { return make_invparam_engine(o, false); },
-      [] { return invparam_engine_options(false); }, invparam_drop_kinds};
-  static const EngineDeclaration kTwin{
-      "invparam-double", "stage F as `invparam`, on double arithmetic (the twin)", double_twin,
-      [](const EngineOptions& o) { return make_invparam_engine(o, true); },
-      [] { return invparam_engine_options(true); }, invparam_drop_kinds};
+      [] { return invparam_engine_options(false); },
+      invparam_drop_kinds};
+  static const EngineDeclaration kTwin{"invparam-double",
+                                       "stage F as `invparam`, on double arithmetic (the twin)",
+                                       twin_capabilities(fixed, kFixed.name),
+                                       [](const EngineOptions& o) { return make_invparam_engine(o, true); },
+                                       [] { return invparam_engine_options(true); },
+                                       invparam_drop_kinds};
   return twin ? kTwin : kFixed;
 }
 

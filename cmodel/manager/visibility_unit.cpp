@@ -42,8 +42,8 @@ HostManagerChannel host_manager_channel(const ChannelView& v) {
       h.channel.b[i][j] = hls::RotationEntry::from_raw_value(
           clamp_raw(std::nearbyint(v.world_to_eye[j][i] * kOne), kRotMin, kRotMax, h.fits));
   }
-  h.channel.tan_half_fov = hls::TanHalfFov::from_raw_value(
-      std::uint64_t(clamp_raw(std::ceil(v.tan_half_fov * kOne), 0, kTanMax, h.fits)));
+  h.channel.tan_half_fov =
+      hls::TanHalfFov::from_raw_value(std::uint64_t(clamp_raw(std::ceil(v.tan_half_fov * kOne), 0, kTanMax, h.fits)));
   h.channel.near =
       hls::NearDistance::from_raw_value(std::uint64_t(clamp_raw(std::floor(v.near / kU), 0, kNearMax, h.fits)));
   return h;

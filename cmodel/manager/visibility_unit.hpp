@@ -40,7 +40,7 @@ HostManagerChannel host_manager_channel(const ChannelView& view);
 HostManagerObject host_manager_object(const glm::dvec3& world_centre, double radius);
 
 struct VisibilityUnitStats {
-  std::uint64_t spheres = 0;              // spheres tested
+  std::uint64_t spheres = 0;                // spheres tested
   std::uint64_t spheres_out_of_format = 0;  // kept without a test: beyond the kernel's formats
 };
 

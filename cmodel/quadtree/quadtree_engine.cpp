@@ -32,9 +32,9 @@ struct QuadOptions {
 constexpr double kFrameBudgetMs = 20.0;  // seed 004: t_0 = 20 ms (50 Hz)
 
 template <class P>
-class QuadPipeline {
+class QuadProcessor {
  public:
-  QuadPipeline(const QuadOptions& o, const char* name, const char* format)
+  QuadProcessor(const QuadOptions& o, const char* name, const char* format)
       : options_(o), name_(name), format_(format), masks_(std::make_unique<hls::MaskMemory>()) {}
 
   // The raster's level count n and the architecture for it (InputError when they do not fit).
@@ -247,7 +247,7 @@ class QuadEngine : public RasterEngine {
                   {"architecture", options_.arch},
                   {"samples_per_pixel", 1 << (2 * options_.side_log2)}};
     rasterise_parts(
-        parts_, parts, [&] { return std::make_unique<QuadPipeline<P>>(options_, name_, format_); }, run.report);
+        parts_, parts, [&] { return std::make_unique<QuadProcessor<P>>(options_, name_, format_); }, run.report);
     std::vector<const quad::PixelFrame<P>*> frames;
     for (std::size_t k = 0; k < parts.size(); ++k) frames.push_back(&parts_[k]->pixels());
     const auto t0 = Clock::now();
@@ -261,8 +261,8 @@ class QuadEngine : public RasterEngine {
   const char* name_;
   const char* format_;
   QuadOptions options_;
-  QuadPipeline<P> pipeline_;
-  std::vector<std::unique_ptr<QuadPipeline<P>>> parts_;  // --pipelines: one per part
+  QuadProcessor<P> pipeline_;
+  std::vector<std::unique_ptr<QuadProcessor<P>>> parts_;  // --pipelines: one per part
 };
 
 }  // namespace
@@ -287,7 +287,8 @@ std::vector<EngineOptionSpec> quadtree_engine_options(bool twin) {
     specs.push_back(choice_option("format", {"coarse", "medium", "fine"}, "fine",
                                   "the parameter formats, hls/quadtree/records.hpp"));
   specs.push_back(integer_option("fifo", 1, 64, "2", "FIFO depth between stages"));
-  specs.push_back(real_option("clock-ns", 0, 1e6, kQuadDefaultClockNs, "the clock period in ns the report converts cycles at"));
+  specs.push_back(
+      real_option("clock-ns", 0, 1e6, kQuadDefaultClockNs, "the clock period in ns the report converts cycles at"));
   specs.push_back(samples_per_pixel_option(hls::kMaxSideLog2));
   return specs;
 }
@@ -319,20 +320,20 @@ const EngineDeclaration& quadtree_engine_declaration(bool twin) {
   EngineCapabilities fixed;
   fixed.bit_accurate = fixed.polygons = fixed.pipelines = fixed.formatter = true;
   fixed.hardware_model = "rtl/quadtree (qt_raster)";
-  EngineCapabilities double_twin = fixed;
-  double_twin.bit_accurate = false;
-  double_twin.hardware_model = "";
-  double_twin.twin_of = "quadtree";
   static const EngineDeclaration kFixed{
       "quadtree",
       "stages C and E: the formatter and seed 004's recursive-subdivision raster processor, clock by clock through "
       "its architecture",
-      fixed, [](const EngineOptions& o) { return make_quadtree_engine(o, false); },
-      [] { return quadtree_engine_options(false); }, no_drop_kinds};
-  static const EngineDeclaration kTwin{
-      "quadtree-double", "stages C and E as `quadtree`, its kernels on double arithmetic (the twin)", double_twin,
-      [](const EngineOptions& o) { return make_quadtree_engine(o, true); },
-      [] { return quadtree_engine_options(true); }, no_drop_kinds};
+      fixed,
+      [](const EngineOptions& o) { return make_quadtree_engine(o, false); },
+      [] { return quadtree_engine_options(false); },
+      no_drop_kinds};
+  static const EngineDeclaration kTwin{"quadtree-double",
+                                       "stages C and E as `quadtree`, its kernels on double arithmetic (the twin)",
+                                       twin_capabilities(fixed, kFixed.name),
+                                       [](const EngineOptions& o) { return make_quadtree_engine(o, true); },
+                                       [] { return quadtree_engine_options(true); },
+                                       no_drop_kinds};
   return twin ? kTwin : kFixed;
 }
 

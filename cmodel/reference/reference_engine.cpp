@@ -26,8 +26,8 @@ class FloatEngine : public RasterEngine {
     const int grid_bits = hls::raster_log2_of(raster) + options_.subpixel_bits;
     if (grid_bits > kMaxGridBits)
       throw InputError("", "--engine-opt",
-                       std::string("engine '") + name() + "': subpixel=" + std::to_string(options_.subpixel_bits) + " at " +
-                           std::to_string(raster) + " lines needs a " + std::to_string(grid_bits) +
+                       std::string("engine '") + name() + "': subpixel=" + std::to_string(options_.subpixel_bits) +
+                           " at " + std::to_string(raster) + " lines needs a " + std::to_string(grid_bits) +
                            "-bit grid; the reference snaps to at most " + std::to_string(kMaxGridBits) + " bits");
     return grid_bits;
   }
@@ -87,8 +87,12 @@ const EngineDeclaration& reference_engine_declaration() {
   EngineCapabilities can;
   can.polygons = can.reference = true;
   static const EngineDeclaration kFloat{
-      "float", "the float reference (ground truth): a z-buffer on 1/Z, the seeds' Gouraud, fog and light points", can,
-      make_reference_engine, reference_engine_options, no_drop_kinds};
+      "float",
+      "the float reference (ground truth): a z-buffer on 1/Z, the seeds' Gouraud, fog and light points",
+      can,
+      make_reference_engine,
+      reference_engine_options,
+      no_drop_kinds};
   return kFloat;
 }
 

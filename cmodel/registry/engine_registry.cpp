@@ -16,9 +16,8 @@ namespace {
 // the one list a new engine joins.
 const std::vector<const EngineDeclaration*>& engine_rows() {
   static const std::vector<const EngineDeclaration*> rows{
-      &reference_engine_declaration(),      &segment_engine_declaration(false),
-      &segment_engine_declaration(true),    &quadtree_engine_declaration(false),
-      &quadtree_engine_declaration(true),   &invparam_engine_declaration(false),
+      &reference_engine_declaration(),     &segment_engine_declaration(false), &segment_engine_declaration(true),
+      &quadtree_engine_declaration(false), &quadtree_engine_declaration(true), &invparam_engine_declaration(false),
       &invparam_engine_declaration(true)};
   return rows;
 }

@@ -130,9 +130,9 @@ struct Front<DoubleSegmentArith> {
 // ---- The pipeline ----------------------------------------------------------------------------------
 
 template <class P>
-class SegmentPipeline {
+class SegmentProcessor {
  public:
-  SegmentPipeline()
+  SegmentProcessor()
       : frame_memory_(std::make_unique<hls::FrameMemory<P>>()),
         segment_memory_(std::make_unique<hls::SegmentMemory<P>>()),
         tables_(std::make_unique<hls::VideoTables<P>>()),
@@ -143,7 +143,7 @@ class SegmentPipeline {
   // seed_quadrilateral: the seed's four-X segment (x-rows=2); seed_interpolation: the seed's I and
   // Z at segment ends (eq. 3-4), interpolated along the row (interp=seed), instead of the planes.
   // side_log2: S = 2^t sample rows per line and samples per row of a pixel.
-  SegmentPipeline(bool seed_quadrilateral, bool seed_interpolation, int side_log2) : SegmentPipeline() {
+  SegmentProcessor(bool seed_quadrilateral, bool seed_interpolation, int side_log2) : SegmentProcessor() {
     seed_quadrilateral_ = seed_quadrilateral;
     seed_interpolation_ = seed_interpolation;
     side_log2_ = side_log2;
@@ -219,7 +219,7 @@ class SegmentPipeline {
   // line's segments drawn from every part's segment memory in part order, so that a sample keeps
   // the first part's colour (the same visibility by priority as one list); the samples' polygons
   // renumbered into the whole list (offsets[k]: the polygons before part k). Returns the segments read.
-  static long merge_parts(const std::vector<SegmentPipeline*>& parts, const std::vector<std::int32_t>& offsets, int n,
+  static long merge_parts(const std::vector<SegmentProcessor*>& parts, const std::vector<std::int32_t>& offsets, int n,
                           int threads, RasterImage& out) {
     const int side_log2 = parts[0]->side_log2_;
     const hls::LatticeGeometry g = hls::LatticeGeometry::for_raster(hls::raster_log2_of(n), side_log2);
@@ -485,7 +485,7 @@ class SegmentEngine : public RasterEngine {
   void check_engine_raster(int raster) const override {
     ScreenFrame f;
     f.raster = raster;
-    SegmentPipeline<P>::check_frame(f, side_log2_);
+    SegmentProcessor<P>::check_frame(f, side_log2_);
   }
 
  protected:
@@ -493,16 +493,16 @@ class SegmentEngine : public RasterEngine {
 
   // Each part on its own pipeline and worker thread, then the merged video stage.
   EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts) override {
-    for (const ScreenFrame* part : parts) SegmentPipeline<P>::check_frame(*part, side_log2_);
+    for (const ScreenFrame* part : parts) SegmentProcessor<P>::check_frame(*part, side_log2_);
     EngineRun run;
     run.report = {{"engine", name_}, {"format", format_}, {"samples_per_pixel", 1 << (2 * side_log2_)}};
     rasterise_parts(
-        parts_, parts, [&] { return std::make_unique<SegmentPipeline<P>>(quad_, interp_, side_log2_); }, run.report);
-    std::vector<SegmentPipeline<P>*> pipes;
+        parts_, parts, [&] { return std::make_unique<SegmentProcessor<P>>(quad_, interp_, side_log2_); }, run.report);
+    std::vector<SegmentProcessor<P>*> pipes;
     for (std::size_t k = 0; k < parts.size(); ++k) pipes.push_back(parts_[k].get());
     const auto t0 = Clock::now();
     run.report["segments_read_by_video"] =
-        SegmentPipeline<P>::merge_parts(pipes, part_offsets(parts), parts[0]->raster, int(parts.size()), run.out);
+        SegmentProcessor<P>::merge_parts(pipes, part_offsets(parts), parts[0]->raster, int(parts.size()), run.out);
     run.report["video_ms"] = ms_since(t0);
     nlohmann::ordered_json total = nlohmann::ordered_json::object();
     for (const auto& part : run.report["pipelines"])
@@ -513,7 +513,7 @@ class SegmentEngine : public RasterEngine {
   }
   bool renders_parts() const override { return true; }
   void check_split_frame(const ScreenFrame& frame) const override {
-    SegmentPipeline<P>::check_frame(frame, side_log2_);
+    SegmentProcessor<P>::check_frame(frame, side_log2_);
   }
 
  private:
@@ -521,8 +521,8 @@ class SegmentEngine : public RasterEngine {
   const char* format_;
   int side_log2_;
   bool quad_, interp_;
-  SegmentPipeline<P> pipeline_;
-  std::vector<std::unique_ptr<SegmentPipeline<P>>> parts_;  // --pipelines: one per part
+  SegmentProcessor<P> pipeline_;
+  std::vector<std::unique_ptr<SegmentProcessor<P>>> parts_;  // --pipelines: one per part
 };
 
 }  // namespace
@@ -579,17 +579,18 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
 const EngineDeclaration& segment_engine_declaration(bool twin) {
   EngineCapabilities fixed;
   fixed.bit_accurate = fixed.polygons = fixed.pipelines = fixed.formatter = true;
-  EngineCapabilities double_twin = fixed;
-  double_twin.bit_accurate = false;
-  double_twin.twin_of = "segment";
-  static const EngineDeclaration kFixed{
-      "segment", "stages C and D: the formatter (eq. 1) and seed 001's segment processor", fixed,
-      [](const EngineOptions& o) { return make_segment_engine(o, false); },
-      [] { return segment_engine_options(false); }, segment_drop_kinds};
-  static const EngineDeclaration kTwin{
-      "segment-double", "stages C and D as `segment`, its kernels on double arithmetic (the twin)", double_twin,
-      [](const EngineOptions& o) { return make_segment_engine(o, true); },
-      [] { return segment_engine_options(true); }, segment_drop_kinds};
+  static const EngineDeclaration kFixed{"segment",
+                                        "stages C and D: the formatter (eq. 1) and seed 001's segment processor",
+                                        fixed,
+                                        [](const EngineOptions& o) { return make_segment_engine(o, false); },
+                                        [] { return segment_engine_options(false); },
+                                        segment_drop_kinds};
+  static const EngineDeclaration kTwin{"segment-double",
+                                       "stages C and D as `segment`, its kernels on double arithmetic (the twin)",
+                                       twin_capabilities(fixed, kFixed.name),
+                                       [](const EngineOptions& o) { return make_segment_engine(o, true); },
+                                       [] { return segment_engine_options(true); },
+                                       segment_drop_kinds};
   return twin ? kTwin : kFixed;
 }
 

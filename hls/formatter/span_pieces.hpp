@@ -293,8 +293,6 @@ void split_into_span_pieces(const FormattedPrimitiveT<Q>& in, int raster_log2, S
   PORT(in, in, ap_none, const FormattedPrimitive&)         \
   PORT(raster_log2, in, ap_none, UInt<4>)                  \
   PORT(out, out, ap_vld, SpanPieces&)
-inline CIG_HLS_TOP(span_pieces_top) {
-  split_into_span_pieces(in, int(raster_log2.value()), out);
-}
+inline CIG_HLS_TOP(span_pieces_top) { split_into_span_pieces(in, int(raster_log2.value()), out); }
 
 CIG_HLS_END_NAMESPACE

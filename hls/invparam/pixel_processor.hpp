@@ -224,8 +224,6 @@ constexpr int kPpTopWordBits = 64;
   PORT(st, inout, ap_ovld, PpState<kPpTopWordBits>&)                    \
   PORT(input, in, ap_none, const Word<kPpTopWordBits>&)                 \
   PORT(ctrl, in, ap_none, const PpCtrl&)
-inline CIG_HLS_TOP(invparam_pixel_processor_top) {
-  return pp_clock(st, input, ctrl);
-}
+inline CIG_HLS_TOP(invparam_pixel_processor_top) { return pp_clock(st, input, ctrl); }
 
 CIG_HLS_END_NAMESPACE

@@ -150,16 +150,14 @@ void invparam_column(const InvparamFaces<W>& faces, const InvparamColumn<W>& col
 // The HLS top in the default word: W = 64 (the seed's "64 bits to 100 km"; an 80-bit register).
 constexpr int kDefaultWordBits = 64;
 // Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
-#define CIG_HLS_PORTS_invparam_column_top(PORT, ARRAY, RESULT)                       \
-  RESULT(void)                                                                       \
-  PORT(faces, in, ap_memory, const InvparamFaces<kDefaultWordBits>&)                 \
-  PORT(column, in, ap_memory, const InvparamColumn<kDefaultWordBits>&)               \
-  PORT(rows, in, ap_none, int)                                                       \
-  PORT(eps, in, ap_none, const Word<kDefaultWordBits>&)                              \
-  PORT(tau_near, in, ap_none, const Word<kDefaultWordBits>&)                         \
+#define CIG_HLS_PORTS_invparam_column_top(PORT, ARRAY, RESULT)         \
+  RESULT(void)                                                         \
+  PORT(faces, in, ap_memory, const InvparamFaces<kDefaultWordBits>&)   \
+  PORT(column, in, ap_memory, const InvparamColumn<kDefaultWordBits>&) \
+  PORT(rows, in, ap_none, int)                                         \
+  PORT(eps, in, ap_none, const Word<kDefaultWordBits>&)                \
+  PORT(tau_near, in, ap_none, const Word<kDefaultWordBits>&)           \
   ARRAY(out, out, ap_memory, InvparamSample<kDefaultWordBits>, kMaxSamplesPerColumn)
-inline CIG_HLS_TOP(invparam_column_top) {
-  invparam_column<kDefaultWordBits>(faces, column, rows, eps, tau_near, out);
-}
+inline CIG_HLS_TOP(invparam_column_top) { invparam_column<kDefaultWordBits>(faces, column, rows, eps, tau_near, out); }
 
 CIG_HLS_END_NAMESPACE

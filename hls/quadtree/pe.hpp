@@ -122,11 +122,11 @@ void evaluate_child(const QuadWindow<P>& w, int q, int raster_log2, bool masked,
 
 // Top function (HLS): one window and its mask word in, its four children out.
 // Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
-#define CIG_HLS_PORTS_quadtree_pe_top(PORT, ARRAY, RESULT)                 \
-  RESULT(void)                                                             \
-  PORT(w, in, ap_none, const QuadWindow<DefaultQuadArith>&)                \
-  PORT(mask_word, in, ap_none, UInt<4>)                                    \
-  PORT(raster_log2, in, ap_none, UInt<4>)                                  \
+#define CIG_HLS_PORTS_quadtree_pe_top(PORT, ARRAY, RESULT)  \
+  RESULT(void)                                              \
+  PORT(w, in, ap_none, const QuadWindow<DefaultQuadArith>&) \
+  PORT(mask_word, in, ap_none, UInt<4>)                     \
+  PORT(raster_log2, in, ap_none, UInt<4>)                   \
   ARRAY(children, out, ap_vld, QuadChild<DefaultQuadArith>, kQuadChildren)
 inline CIG_HLS_TOP(quadtree_pe_top) {
   for (int q = 0; q < kQuadChildren; ++q) evaluate_child(w, q, int(raster_log2.value()), mask_word.bit(q), children[q]);

@@ -129,8 +129,6 @@ void quad_pixel_resolve(const QuadPixelState<P>& st, const QuadPixelTables<P>& t
   PORT(t, in, ap_memory, const QuadPixelTables<DefaultQuadArith>&)   \
   PORT(lights, in, ap_none, const QuadLightCover<DefaultQuadArith>&) \
   PORT(st, inout, ap_ovld, QuadPixelState<DefaultQuadArith>&)
-inline CIG_HLS_TOP(quadtree_pixel_top) {
-  return quad_pixel_process(px, samples, t, lights, st);
-}
+inline CIG_HLS_TOP(quadtree_pixel_top) { return quad_pixel_process(px, samples, t, lights, st); }
 
 CIG_HLS_END_NAMESPACE

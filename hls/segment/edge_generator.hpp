@@ -142,8 +142,6 @@ void generate_edges(const FormattedPrimitiveT<Q>& in, int raster_log2, PolygonEd
   PORT(in, in, ap_none, const FormattedPrimitive&)            \
   PORT(raster_log2, in, ap_none, UInt<4>)                     \
   PORT(out, out, ap_vld, PolygonEdges<DefaultSegmentArith>&)
-inline CIG_HLS_TOP(edge_generator_top) {
-  generate_edges<DefaultSegmentArith>(in, int(raster_log2.value()), out);
-}
+inline CIG_HLS_TOP(edge_generator_top) { generate_edges<DefaultSegmentArith>(in, int(raster_log2.value()), out); }
 
 CIG_HLS_END_NAMESPACE

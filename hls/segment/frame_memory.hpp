@@ -89,8 +89,6 @@ bool frame_memory_read(const FrameMemory<P, K>& m, int b, int& addr, PolygonEdge
   RESULT(bool)                                                    \
   PORT(e, in, ap_none, const PolygonEdges<DefaultSegmentArith>&)  \
   PORT(m, inout, ap_memory, FrameMemory<DefaultSegmentArith>&)
-inline CIG_HLS_TOP(frame_memory_write_top) {
-  return frame_memory_write(e, m);
-}
+inline CIG_HLS_TOP(frame_memory_write_top) { return frame_memory_write(e, m); }
 
 CIG_HLS_END_NAMESPACE

@@ -46,11 +46,11 @@ int generate_light_segments(const FormattedPrimitive& light, int raster_log2, UI
 }
 
 // Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
-#define CIG_HLS_PORTS_light_segments_top(PORT, ARRAY, RESULT)              \
-  RESULT(int)                                                              \
-  PORT(light, in, ap_none, const FormattedPrimitive&)                      \
-  PORT(raster_log2, in, ap_none, UInt<4>)                                  \
-  PORT(channel, in, ap_none, UInt<3>)                                      \
+#define CIG_HLS_PORTS_light_segments_top(PORT, ARRAY, RESULT) \
+  RESULT(int)                                                 \
+  PORT(light, in, ap_none, const FormattedPrimitive&)         \
+  PORT(raster_log2, in, ap_none, UInt<4>)                     \
+  PORT(channel, in, ap_none, UInt<3>)                         \
   ARRAY(out, out, ap_vld, Segment<DefaultSegmentArith>, kMaxLightSegments)
 inline CIG_HLS_TOP(light_segments_top) {
   return generate_light_segments<DefaultSegmentArith>(light, int(raster_log2.value()), channel, out);

@@ -99,11 +99,11 @@ int generate_segments(const PolygonEdges<P>& in, int raster_log2, UInt<3> channe
 
 // Top function (HLS): the default format.
 // Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
-#define CIG_HLS_PORTS_segment_generator_top(PORT, ARRAY, RESULT)      \
-  RESULT(int)                                                         \
-  PORT(in, in, ap_none, const PolygonEdges<DefaultSegmentArith>&)     \
-  PORT(raster_log2, in, ap_none, UInt<4>)                             \
-  PORT(channel, in, ap_none, UInt<3>)                                 \
+#define CIG_HLS_PORTS_segment_generator_top(PORT, ARRAY, RESULT)  \
+  RESULT(int)                                                     \
+  PORT(in, in, ap_none, const PolygonEdges<DefaultSegmentArith>&) \
+  PORT(raster_log2, in, ap_none, UInt<4>)                         \
+  PORT(channel, in, ap_none, UInt<3>)                             \
   ARRAY(out, out, ap_memory, Segment<DefaultSegmentArith>, kMaxLines)
 inline CIG_HLS_TOP(segment_generator_top) {
   return generate_segments<DefaultSegmentArith>(in, int(raster_log2.value()), channel, false, out);

@@ -267,8 +267,6 @@ int render_line(int line, int raster_log2, const SegmentMemory<P, K>& m, const V
   PORT(t, in, ap_memory, const VideoTables<DefaultSegmentArith>&)   \
   PORT(w, inout, ap_memory, LineBuffer<DefaultSegmentArith>&)       \
   PORT(out, out, ap_vld, PixelLine&)
-inline CIG_HLS_TOP(video_channel_top) {
-  return render_line(int(line.value()), int(raster_log2.value()), m, t, w, out);
-}
+inline CIG_HLS_TOP(video_channel_top) { return render_line(int(line.value()), int(raster_log2.value()), m, t, w, out); }
 
 CIG_HLS_END_NAMESPACE

@@ -53,12 +53,10 @@ bool y_sort(const Segment<P>& s, SegmentMemory<P, K>& m) {
 }
 
 // Ports (hls/types/top_ports.hpp): name, direction, interface, C++ type.
-#define CIG_HLS_PORTS_y_sorter_top(PORT, ARRAY, RESULT)          \
-  RESULT(bool)                                                   \
-  PORT(s, in, ap_none, const Segment<DefaultSegmentArith>&)      \
+#define CIG_HLS_PORTS_y_sorter_top(PORT, ARRAY, RESULT)     \
+  RESULT(bool)                                              \
+  PORT(s, in, ap_none, const Segment<DefaultSegmentArith>&) \
   PORT(m, inout, ap_memory, SegmentMemory<DefaultSegmentArith>&)
-inline CIG_HLS_TOP(y_sorter_top) {
-  return y_sort(s, m);
-}
+inline CIG_HLS_TOP(y_sorter_top) { return y_sort(s, m); }
 
 CIG_HLS_END_NAMESPACE

@@ -16,7 +16,8 @@
 // The signature `RESULT top(PORTS...)`.
 #define CIG_HLS_TOP(top) CIG_HLS_TOP_RESULT(top) top(CIG_HLS_TOP_PARAMS(top))
 #define CIG_HLS_TOP_RESULT(top) CIG_HLS_PORTS_##top(CIG_HLS_SKIP_PORT, CIG_HLS_SKIP_ARRAY, CIG_HLS_RESULT_TYPE)
-#define CIG_HLS_TOP_PARAMS(top) CIG_HLS_DROP_FIRST(CIG_HLS_PORTS_##top(CIG_HLS_PARAM, CIG_HLS_ARRAY_PARAM, CIG_HLS_SKIP_RESULT))
+#define CIG_HLS_TOP_PARAMS(top) \
+  CIG_HLS_DROP_FIRST(CIG_HLS_PORTS_##top(CIG_HLS_PARAM, CIG_HLS_ARRAY_PARAM, CIG_HLS_SKIP_RESULT))
 
 // Expansions of one entry; a list of parameters is built with a leading comma that
 // CIG_HLS_DROP_FIRST removes (every top has at least one parameter).

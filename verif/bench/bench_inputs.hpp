@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "frame/screen_frame.hpp"
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::bench {
@@ -22,7 +22,7 @@ inline const Scene& airfield_scene() {
 }
 // One channel of one frame of scenes/airfield.json (stages A and B, run by the caller once: not timed).
 inline ScreenFrame airfield_frame(int frame, int channel) {
-  const ScenePipeline pipeline(airfield_scene());
+  const ImageGenerator pipeline(airfield_scene());
   nlohmann::ordered_json unused;
   return pipeline.geometry(frame, channel, unused);
 }

@@ -10,7 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig {
@@ -20,7 +20,7 @@ const char* const kEngines[] = {"segment", "quadtree"};
 
 void channel(benchmark::State& state) {
   static const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  static const ScenePipeline pipeline(scene);
+  static const ImageGenerator pipeline(scene);
   const char* engine = kEngines[state.range(0)];
   const int pipelines = int(state.range(1));
   double polygons = 0, balance = 1;
@@ -46,7 +46,7 @@ BENCHMARK(channel)
 // bits, and for the quadtree the same cycle counts).
 void strips(benchmark::State& state) {
   static const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  static const ScenePipeline pipeline(scene);
+  static const ImageGenerator pipeline(scene);
   const char* engine = kEngines[state.range(0)];
   for (auto _ : state) {
     const std::vector<ChannelOutput> out = pipeline.render(5, {0}, engine, {}, int(state.range(1)), 1);

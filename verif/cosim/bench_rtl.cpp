@@ -95,7 +95,7 @@ struct IpInput {
 const IpInput& polyhedra_ip_input() {
   static const IpInput input = [] {
     const cig::Scene scene = cig::load_scene(cig::bench::source_path("scenes/polyhedra.json"));
-    const cig::ScenePipeline pipeline(scene);
+    const cig::ImageGenerator pipeline(scene);
     nlohmann::ordered_json rep;
     const cig::ScreenFrame f = pipeline.geometry(0, 1, rep);
     const cig::InvparamSetup<64> setup = cig::invparam_setup<64>(f, cig::InvparamLattice{64, 0});

@@ -3,14 +3,14 @@
 // geometric processor and every engine on every channel. Model paths resolve against the working
 // directory.
 #include "fuzz_input.hpp"
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 #include "scene/scene_loader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return cig::fuzz::run_input(data, size, [](const std::string& text) {
     cig::Scene scene = cig::parse_scene(text, "fuzz.json");
     scene.raster = 32;
-    const cig::ScenePipeline pipeline(scene);
+    const cig::ImageGenerator pipeline(scene);
     std::vector<int> channels;
     for (int c = 0; c < int(scene.channels.size()); ++c) channels.push_back(c);
     for (const char* engine : {"float", "segment", "quadtree"}) {

@@ -1,7 +1,7 @@
 // Golden vectors of stage F (hls/invparam/, seed 002): invparam_column_top and
 // invparam_pixel_processor_top at W = 64.
 //
-// Inputs: frames of scenes/polyhedra.json through stages A and B (ScenePipeline::geometry), their
+// Inputs: frames of scenes/polyhedra.json through stages A and B (ImageGenerator::geometry), their
 // convex polyhedra set up as the invparam engine sets them up (invparam_setup<64>, on a small
 // lattice), the column values the host computes (invparam_first_column, invparam_next_column).
 // One frame also holds hand-made polyhedra for the kernel's awkward cases: a face through the eye
@@ -19,11 +19,11 @@
 #include <utility>
 #include <vector>
 
+#include "generator/image_generator.hpp"
 #include "hls/invparam/pixel_processor.hpp"
 #include "hls/invparam/visibility.hpp"
 #include "invparam/face_setup.hpp"
 #include "invparam/systolic_array.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
 #include "tb/invparam_column_top.hpp"
 #include "tb/invparam_pixel_processor_top.hpp"
@@ -75,7 +75,7 @@ struct Frames {
 
 Frames polyhedra_frames(const std::string& scenes) {
   const Scene scene = load_scene(scenes + "/polyhedra.json");
-  const ScenePipeline pipeline(scene);
+  const ImageGenerator pipeline(scene);
   nlohmann::ordered_json report;
   Frames f;
   f.near = pipeline.geometry(9, 0, report);

@@ -49,7 +49,7 @@ ALLOWED = {
                         "hls/invparam"},                                                    # stage F
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree", "cmodel/invparam"},  # every engine
-    "cmodel/pipeline": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
+    "cmodel/generator": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
                         "cmodel/frame", "cmodel/image", "cmodel/engine", "cmodel/registry"},
     # seed-reproduction studies: above every stage and engine, below the CLI; nothing but the CLI
     # (and verif/) includes them, so a study can change without touching the data path

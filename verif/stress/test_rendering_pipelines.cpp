@@ -17,8 +17,8 @@
 
 #include "cli/stress_lists.hpp"
 #include "common/error.hpp"
+#include "generator/image_generator.hpp"
 #include "manager/pipeline_loading.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -145,7 +145,7 @@ TEST(RenderingPipelines, ListsAreTheChannelsListCutInOrder) {
 
 TEST(RenderingPipelines, AirfieldRendersAsOnePipeline) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  const ScenePipeline pipeline(scene);
+  const ImageGenerator pipeline(scene);
   const std::vector<int> channels{0, 1, 2};
   for (const char* engine : kPriorityEngines)
     for (int frame : {0, 9}) {
@@ -169,7 +169,7 @@ TEST(RenderingPipelines, AirfieldRendersAsOnePipeline) {
 TEST(RenderingPipelines, AirfieldOnEq1GridSettingIsUnchanged) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
   ASSERT_EQ(scene.raster, 512);
-  const ScenePipeline pipeline(scene);
+  const ImageGenerator pipeline(scene);
   EngineOptions on_grid;
   on_grid.params["subpixel"] = "3";
   // The segment engine on every channel, the quadtree's slower architecture model on one.
@@ -190,7 +190,7 @@ TEST(RenderingPipelines, AirfieldOnEq1GridSettingIsUnchanged) {
 // processor's video channel, the same bits as one thread.
 TEST(RenderingPipelines, StripsGiveTheSameImage) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  const ScenePipeline pipeline(scene);
+  const ImageGenerator pipeline(scene);
   for (const char* engine : {"segment", "segment-double"}) {
     const std::vector<ChannelOutput> one = pipeline.render(3, {1}, engine, {}, 1);
     for (int threads : {2, 3}) {

@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.hpp"
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -57,8 +57,9 @@ TEST(EngineRegistry, EveryListedKeyTakesItsDefaultAndRefusesValuesOutsideItsRang
       const std::string at_default = s.default_value.empty() ? number(s.min) : s.default_value;
       EXPECT_NO_THROW(make_engine(e.name, with(e, s.key, at_default)));
       for (const std::string& v : s.choices) EXPECT_NO_THROW(make_engine(e.name, with(e, s.key, v))) << v;
-      if (s.kind == Kind::kInteger || s.kind == Kind::kReal)
+      if (s.kind == Kind::kInteger || s.kind == Kind::kReal) {
         EXPECT_NO_THROW(make_engine(e.name, with(e, s.key, number(s.max))));
+      }
       for (const std::string& v : outside(s)) EXPECT_THROW(make_engine(e.name, with(e, s.key, v)), InputError) << v;
     }
 }
@@ -122,7 +123,7 @@ class MixedScene : public testing::Test {
 Scene* MixedScene::scene_ = nullptr;
 
 TEST_F(MixedScene, EveryReportCarriesTheDroppedKeysItDocuments) {
-  const ScenePipeline pipeline(*scene_);
+  const ImageGenerator pipeline(*scene_);
   nlohmann::ordered_json unused;
   ScreenFrame list = pipeline.geometry(0, 0, unused);  // as a polygon list: no polyhedra
   list.polyhedra.clear();
@@ -134,9 +135,10 @@ TEST_F(MixedScene, EveryReportCarriesTheDroppedKeysItDocuments) {
       ASSERT_TRUE(co.report["raster"].contains("dropped"));
       EXPECT_EQ(keys_of(co.report["raster"]["dropped"]), documented(e));
     }
-    if (e.can.pipelines)
+    if (e.can.pipelines) {
       EXPECT_EQ(keys_of(pipeline.render(0, {0}, e.name, {}, 1, 2)[0].report["raster"]["dropped"]), documented(e));
-    if (e.can.polygons) EXPECT_EQ(keys_of(make_engine(e.name, {})->render(list).report["dropped"]), documented(e));
+    }
+    if (e.can.polygons) { EXPECT_EQ(keys_of(make_engine(e.name, {})->render(list).report["dropped"]), documented(e)); }
   }
 }
 
@@ -148,7 +150,7 @@ long ordinary_polygons(const Scene& scene, const ScreenFrame& f) {
 }
 
 TEST_F(MixedScene, StageFCountsWhatItDoesNotDraw) {
-  const ScenePipeline pipeline(*scene_);
+  const ImageGenerator pipeline(*scene_);
   for (const char* engine : {"invparam", "invparam-double"})
     for (int frame : {0, 1})
       for (int channel : {0, 1}) {
@@ -168,7 +170,7 @@ TEST_F(MixedScene, StageFCountsWhatItDoesNotDraw) {
 }
 
 TEST_F(MixedScene, StageFDrawsAChannelWithoutPolyhedraAsBackgroundAndCountsItsPolygons) {
-  const ScenePipeline pipeline(*scene_);
+  const ImageGenerator pipeline(*scene_);
   nlohmann::ordered_json unused;
   ScreenFrame f = pipeline.geometry(0, 0, unused);
   f.polyhedra.clear();  // the scene has some, this channel sees none

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "engine/engine.hpp"
+#include "generator/image_generator.hpp"
 #include "image/image.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
@@ -42,7 +42,7 @@ TEST(Golden, PolygonListFloatAndSnapped) {
 
 TEST(Golden, SceneThroughManagerGeometryAndReference) {
   const Scene s = load_scene(test::source_path("scenes/small/hut.json"));
-  ScenePipeline pipeline(s);
+  ImageGenerator pipeline(s);
   for (int frame : {0, 3}) {
     auto outs = pipeline.render(frame, {0, 1}, "float", EngineOptions{}, 2);
     for (const auto& co : outs) {
@@ -57,7 +57,7 @@ TEST(Golden, SceneThroughManagerGeometryAndReference) {
 TEST(Golden, PolygonListRoundTripsBitForBit) {
   // The geometric processor's output written as cig-polys and read back renders identically.
   const Scene s = load_scene(test::source_path("scenes/small/hut.json"));
-  ScenePipeline pipeline(s);
+  ImageGenerator pipeline(s);
   nlohmann::ordered_json report;
   const ScreenFrame f = pipeline.geometry(2, 1, report);
   const ScreenFrame g = parse_polygon_list(polygon_list_json(f), "roundtrip");

@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.hpp"
+#include "generator/image_generator.hpp"
 #include "image/image_compare.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -48,7 +48,7 @@ class InvparamScene : public testing::Test {
 Scene* InvparamScene::scene_ = nullptr;
 
 TEST_F(InvparamScene, EqualsTheReferenceAt64BitsAndInTheTwin) {
-  const ScenePipeline pipeline(*scene_);
+  const ImageGenerator pipeline(*scene_);
   const std::vector<int> channels{0, 1, 2};
   for (int frame : {3, 9}) {
     const std::vector<ChannelOutput> want = pipeline.render(frame, channels, "float", {}, 1);
@@ -65,7 +65,7 @@ TEST_F(InvparamScene, EqualsTheReferenceAt64BitsAndInTheTwin) {
 }
 
 TEST_F(InvparamScene, ShortWordsLoseThePanelAt100Km) {
-  const ScenePipeline pipeline(*scene_);
+  const ImageGenerator pipeline(*scene_);
   const std::vector<int> narrow{2};
   const RasterImage want = pipeline.render(0, narrow, "float", {}, 1)[0].out;
   EXPECT_GT(difference(pipeline.render(0, narrow, "invparam", with("bits", "48"), 1)[0].out, want).ids, 100);

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.hpp"
+#include "generator/image_generator.hpp"
 #include "manager/channel_view.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/polyhedron.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/world_database.hpp"
@@ -134,7 +134,7 @@ glm::dvec3 stage_f_eye(const ChannelView& view, const glm::dvec3& world) {
 TEST_P(PolyhedraFrames, FacesMatchTheDrawnPolygonsAndBoundTheirObjects) {
   const Scene scene = load_scene(test::source_path("scenes/polyhedra.json"));
   const WorldDatabase db = build_world_database(scene);
-  const ScenePipeline pipeline(scene);
+  const ImageGenerator pipeline(scene);
   const int frame = GetParam();
   int drawn_faces = 0, polyhedra = 0;
   for (int ch = 0; ch < int(scene.channels.size()); ++ch) {
@@ -195,7 +195,7 @@ INSTANTIATE_TEST_SUITE_P(Frames, PolyhedraFrames, ::testing::Values(0, 9));
 TEST(PolyhedronGeometry, PolygonListsAndOrdinaryObjectsHaveNone) {
   const Scene scene = load_scene(test::source_path("scenes/airfield.json"));
   nlohmann::ordered_json report;
-  const ScreenFrame f = ScenePipeline(scene).geometry(0, 1, report);
+  const ScreenFrame f = ImageGenerator(scene).geometry(0, 1, report);
   EXPECT_FALSE(f.polygons.empty());
   EXPECT_TRUE(f.polyhedra.empty());
   EXPECT_TRUE(load_polygon_list(test::source_path("scenes/small/overlap.polys.json")).polyhedra.empty());

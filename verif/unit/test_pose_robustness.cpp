@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "frame/screen_frame.hpp"
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
@@ -58,7 +58,7 @@ TEST(PoseRobustness, EveryPoseGivesAReadableListThatEveryEngineDraws) {
     scene.keyframes[0].pose = random_pose(rng, k);
     scene.near = k % 4 == 0 ? kMinNear : k % 4 == 1 ? kMaxNear : 1.0;
     SCOPED_TRACE("pose " + std::to_string(k));
-    const ScenePipeline pipeline(scene);
+    const ImageGenerator pipeline(scene);
     for (int c = 0; c < int(scene.channels.size()); ++c) {
       nlohmann::ordered_json report;
       const ScreenFrame f = pipeline.geometry(0, c, report);

@@ -10,8 +10,8 @@
 #include "common/error.hpp"
 #include "engine/engine.hpp"
 #include "frame/screen_frame.hpp"
+#include "generator/image_generator.hpp"
 #include "image/image_compare.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -54,7 +54,7 @@ TEST(QuadtreeEngine, IdsEqualTheSnappedReferenceWhenPriorityIsDepth) {
 // priority order. Frame 0, the centre channel, at 256 lines (sanitizer build time).
 TEST(QuadtreeEngine, AirfieldIdsDifferFromTheZBufferOnlyWherePriorityDisagrees) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  ScenePipeline pipeline(scene);
+  ImageGenerator pipeline(scene);
   nlohmann::ordered_json unused;
   ScreenFrame f = pipeline.geometry(0, 1, unused);
   f.raster = 256;
@@ -133,7 +133,7 @@ nlohmann::ordered_json counts_of(const nlohmann::ordered_json& report) {
 // light points (the airfield, 128 lines) and the depth-complexity list.
 TEST(QuadtreeEngine, ThreadsGiveTheSameImageAndCycles) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  ScenePipeline pipeline(scene);
+  ImageGenerator pipeline(scene);
   nlohmann::ordered_json unused;
   std::vector<ScreenFrame> frames = {pipeline.geometry(0, 1, unused), depth10(), pipeline.geometry(2, 0, unused)};
   frames[0].raster = 128;

@@ -11,9 +11,9 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "generator/image_generator.hpp"
 #include "manager/scene_manager.hpp"
 #include "manager/visibility_twin.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -112,8 +112,8 @@ TEST(VisibilityUnit, KernelKeepsWhatTheTwinKeepsOnEveryAirfieldFrame) {
 TEST(VisibilityUnit, SpheresBeyondTheFormatsAreKeptAndCounted) {
   WorldDatabase db;
   WorldObject near_eye, far_out;
-  near_eye.centre = {0, 50, 0}, near_eye.radius = 1;         // in front of the eye
-  far_out.centre = {0, 3e6, 0}, far_out.radius = 1;          // beyond +-2^20 m
+  near_eye.centre = {0, 50, 0}, near_eye.radius = 1;  // in front of the eye
+  far_out.centre = {0, 3e6, 0}, far_out.radius = 1;   // beyond +-2^20 m
   db.objects = {near_eye, far_out};
   ChannelView v;
   v.eye = {0, 0, 0};

@@ -19,8 +19,8 @@
 
 #include <gtest/gtest.h>
 
+#include "generator/image_generator.hpp"
 #include "ip_cosim.hpp"
-#include "pipeline/scene_pipeline.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/invparam_scenes.hpp"
 
@@ -346,7 +346,7 @@ TEST(IpCosim, ConsecutiveFramesWithoutReset) {
 TEST(IpCosim, PolyhedraFrames) {
   if (configuration_missing(IpRtlConfig{64, 64})) GTEST_SKIP() << "(64, 64) not built";
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/polyhedra.json");
-  ScenePipeline pipeline(scene);
+  ImageGenerator pipeline(scene);
   auto rtl = rtl_for(IpRtlConfig{64, 64});
   ASSERT_TRUE(rtl != nullptr);
   const std::unique_ptr<IpFrameCosim> cosim = make_ip_frame_cosim(*rtl);

@@ -17,7 +17,7 @@
 #include "common/error.hpp"
 #include "cosim.hpp"
 #include "frame/screen_frame.hpp"
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace cig::cosim {
@@ -205,7 +205,7 @@ TEST(Cosim, StartWindow) {
 
 TEST(Cosim, StartWindowAirfield) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  ScenePipeline pipeline(scene);
+  ImageGenerator pipeline(scene);
   nlohmann::ordered_json rep;
   const ScreenFrame f = pipeline.geometry(0, 1, rep);
   for (int t = 1; t <= 2; ++t) expect_start_window(f, 9, t);
@@ -249,7 +249,7 @@ TEST(Cosim, DepthComplexityTen) {
 // cycles it compares with `cig render --engine quadtree`'s).
 TEST(Cosim, AirfieldFrames) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
-  ScenePipeline pipeline(scene);
+  ImageGenerator pipeline(scene);
   for (int frame : {60, 120}) {
     nlohmann::ordered_json rep;
     const ScreenFrame f = pipeline.geometry(frame, 1, rep);

@@ -103,24 +103,23 @@ struct PortPrinter {
   v.template port<Value<type>>(#name, #direction, #interface, #type);
 #define CIG_TB_ROW_ARRAY(name, direction, interface, element, extent) \
   v.template port<Value<element>[extent]>(#name, #direction, #interface, #element " (&)[" #extent "]");
-#define CIG_TB_ROW_RESULT(rtype) \
-  v.template port<typename ResultOf<rtype>::type>("return", "out", "ap_ctrl_hs", #rtype);
+#define CIG_TB_ROW_RESULT(rtype) v.template port<typename ResultOf<rtype>::type>("return", "out", "ap_ctrl_hs", #rtype);
 
-#define CIG_TB_PORTS(top)                                                              \
-  decltype(::cig::hls::top) top;                                                       \
-  namespace cig {                                                                      \
-  namespace hls_tb {                                                                   \
-  namespace top##_tb {                                                                 \
-  using namespace ::cig::hls;                                                          \
-  struct Ports {                                                                       \
-    static constexpr const char* kTop = #top;                                          \
-    template <class V>                                                                 \
-    static void ports(V& v) {                                                          \
-      CIG_HLS_PORTS_##top(CIG_TB_ROW_PORT, CIG_TB_ROW_ARRAY, CIG_TB_ROW_RESULT)        \
-    }                                                                                  \
-  };                                                                                   \
-  }                                                                                    \
-  }                                                                                    \
+#define CIG_TB_PORTS(top)                                                         \
+  decltype(::cig::hls::top) top;                                                  \
+  namespace cig {                                                                 \
+  namespace hls_tb {                                                              \
+  namespace top##_tb {                                                            \
+    using namespace ::cig::hls;                                                   \
+    struct Ports {                                                                \
+      static constexpr const char* kTop = #top;                                   \
+      template <class V>                                                          \
+      static void ports(V& v) {                                                   \
+        CIG_HLS_PORTS_##top(CIG_TB_ROW_PORT, CIG_TB_ROW_ARRAY, CIG_TB_ROW_RESULT) \
+      }                                                                           \
+    };                                                                            \
+  }                                                                               \
+  }                                                                               \
   }
 
 // ---- CIG_TB_CALL_CASE ---------------------------------------------------------------------------
@@ -164,43 +163,42 @@ struct PortPrinter {
 #define CIG_TB_COPY_PORT(name, direction, interface, type) CIG_TB_COPY_##direction(name)
 #define CIG_TB_COPY_ARRAY(name, direction, interface, element, extent) CIG_TB_COPY_##direction(name)
 
-#define CIG_TB_CALL_CASE(Name, top)                                                                              \
-  CIG_TB_PORTS(top)                                                                                              \
-  namespace cig {                                                                                                \
-  namespace hls_tb {                                                                                             \
-  namespace top##_tb {                                                                                           \
-  struct Case : Ports {                                                                                          \
-    struct Input {                                                                                               \
-      CIG_HLS_PORTS_##top(CIG_TB_INPUT_PORT, CIG_TB_INPUT_ARRAY, CIG_HLS_SKIP_RESULT)                            \
-    };                                                                                                           \
-    struct Output {                                                                                              \
-      CIG_HLS_PORTS_##top(CIG_HLS_SKIP_PORT, CIG_HLS_SKIP_ARRAY, CIG_TB_OUTPUT_RESULT)                           \
-      CIG_HLS_PORTS_##top(CIG_TB_OUTPUT_PORT, CIG_TB_OUTPUT_ARRAY, CIG_HLS_SKIP_RESULT)                          \
-    };                                                                                                           \
-    static void run(const Input& i, Output& o) {                                                                 \
-      CIG_HLS_PORTS_##top(CIG_TB_COPY_PORT, CIG_TB_COPY_ARRAY, CIG_HLS_SKIP_RESULT)                              \
-      store_result(o.result, [&] {                                                                               \
-        return CIG_TB_DESIGN(top)(                                                                               \
-            CIG_HLS_DROP_FIRST(CIG_HLS_PORTS_##top(CIG_TB_ARG_PORT, CIG_TB_ARG_ARRAY, CIG_HLS_SKIP_RESULT)));    \
-      });                                                                                                        \
-    }                                                                                                            \
-  };                                                                                                             \
-  }                                                                                                              \
-  using Name = top##_tb::Case;                                                                                   \
-  template <>                                                                                                    \
-  struct Fields<Name::Input> {                                                                                   \
-    template <class V, class R>                                                                                  \
-    static void visit(V& v, R& r) {                                                                              \
-      CIG_HLS_PORTS_##top(CIG_TB_VISIT_INPUT_PORT, CIG_TB_VISIT_INPUT_ARRAY, CIG_HLS_SKIP_RESULT)                \
-    }                                                                                                            \
-  };                                                                                                             \
-  template <>                                                                                                    \
-  struct Fields<Name::Output> {                                                                                  \
-    template <class V, class R>                                                                                  \
-    static void visit(V& v, R& r) {                                                                              \
-      CIG_HLS_PORTS_##top(CIG_HLS_SKIP_PORT, CIG_HLS_SKIP_ARRAY, CIG_TB_VISIT_RESULT)                            \
-      CIG_HLS_PORTS_##top(CIG_TB_VISIT_OUTPUT_PORT, CIG_TB_VISIT_OUTPUT_ARRAY, CIG_HLS_SKIP_RESULT)              \
-    }                                                                                                            \
-  };                                                                                                             \
-  }                                                                                                              \
+#define CIG_TB_CALL_CASE(Name, top)                                                                                \
+  CIG_TB_PORTS(top)                                                                                                \
+  namespace cig {                                                                                                  \
+  namespace hls_tb {                                                                                               \
+  namespace top##_tb {                                                                                             \
+    struct Case : Ports {                                                                                          \
+      struct Input {                                                                                               \
+        CIG_HLS_PORTS_##top(CIG_TB_INPUT_PORT, CIG_TB_INPUT_ARRAY, CIG_HLS_SKIP_RESULT)                            \
+      };                                                                                                           \
+      struct Output {                                                                                              \
+        CIG_HLS_PORTS_##top(CIG_HLS_SKIP_PORT, CIG_HLS_SKIP_ARRAY, CIG_TB_OUTPUT_RESULT) CIG_HLS_PORTS_            \
+            ##top(CIG_TB_OUTPUT_PORT, CIG_TB_OUTPUT_ARRAY, CIG_HLS_SKIP_RESULT)                                    \
+      };                                                                                                           \
+      static void run(const Input& i, Output& o) {                                                                 \
+        CIG_HLS_PORTS_##top(CIG_TB_COPY_PORT, CIG_TB_COPY_ARRAY, CIG_HLS_SKIP_RESULT) store_result(o.result, [&] { \
+          return CIG_TB_DESIGN(top)(                                                                               \
+              CIG_HLS_DROP_FIRST(CIG_HLS_PORTS_##top(CIG_TB_ARG_PORT, CIG_TB_ARG_ARRAY, CIG_HLS_SKIP_RESULT)));    \
+        });                                                                                                        \
+      }                                                                                                            \
+    };                                                                                                             \
+  }                                                                                                                \
+  using Name = top##_tb::Case;                                                                                     \
+  template <>                                                                                                      \
+  struct Fields<Name::Input> {                                                                                     \
+    template <class V, class R>                                                                                    \
+    static void visit(V& v, R& r) {                                                                                \
+      CIG_HLS_PORTS_##top(CIG_TB_VISIT_INPUT_PORT, CIG_TB_VISIT_INPUT_ARRAY, CIG_HLS_SKIP_RESULT)                  \
+    }                                                                                                              \
+  };                                                                                                               \
+  template <>                                                                                                      \
+  struct Fields<Name::Output> {                                                                                    \
+    template <class V, class R>                                                                                    \
+    static void visit(V& v, R& r) {                                                                                \
+      CIG_HLS_PORTS_##top(CIG_HLS_SKIP_PORT, CIG_HLS_SKIP_ARRAY, CIG_TB_VISIT_RESULT)                              \
+          CIG_HLS_PORTS_##top(CIG_TB_VISIT_OUTPUT_PORT, CIG_TB_VISIT_OUTPUT_ARRAY, CIG_HLS_SKIP_RESULT)            \
+    }                                                                                                              \
+  };                                                                                                               \
+  }                                                                                                                \
   }

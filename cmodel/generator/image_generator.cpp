@@ -1,4 +1,4 @@
-#include "pipeline/scene_pipeline.hpp"
+#include "generator/image_generator.hpp"
 
 #include "common/parallel.hpp"
 #include "common/timing.hpp"
@@ -9,7 +9,7 @@
 
 namespace cig {
 
-ScenePipeline::ScenePipeline(const Scene& scene, const CullSettings& culling, VisibilityArith visibility)
+ImageGenerator::ImageGenerator(const Scene& scene, const CullSettings& culling, VisibilityArith visibility)
     : scene_(scene), db_(build_world_database(scene)), tree_(std::make_unique<SceneQuadtree>(db_)) {
   manager_.tree = tree_.get();
   manager_.culling = culling;
@@ -63,7 +63,7 @@ nlohmann::ordered_json geometry_report(const GeometryStats& gs) {
 
 }  // namespace
 
-PriorityList ScenePipeline::manage(const ChannelView& view, nlohmann::ordered_json& report) const {
+PriorityList ImageGenerator::manage(const ChannelView& view, nlohmann::ordered_json& report) const {
   const auto t0 = Clock::now();
   SceneManagerStats ms;
   PriorityList list = manage_channel(db_, view, ms, manager_);
@@ -72,7 +72,7 @@ PriorityList ScenePipeline::manage(const ChannelView& view, nlohmann::ordered_js
   return list;
 }
 
-ScreenFrame ScenePipeline::geometry(int frame, int channel, nlohmann::ordered_json& report) const {
+ScreenFrame ImageGenerator::geometry(int frame, int channel, nlohmann::ordered_json& report) const {
   const ChannelView view = make_channel_view(scene_, frame, channel);
   const PriorityList list = manage(view, report);
   GeometryStats gs;
@@ -81,8 +81,8 @@ ScreenFrame ScenePipeline::geometry(int frame, int channel, nlohmann::ordered_js
   return f;
 }
 
-std::vector<ScreenFrame> ScenePipeline::geometry_parts(int frame, int channel, int pipelines,
-                                                       nlohmann::ordered_json& report) const {
+std::vector<ScreenFrame> ImageGenerator::geometry_parts(int frame, int channel, int pipelines,
+                                                        nlohmann::ordered_json& report) const {
   const ChannelView view = make_channel_view(scene_, frame, channel);
   const PipelineLoad load = load_pipelines(manage(view, report), db_, pipelines);
   GeometryStats gs;
@@ -101,8 +101,9 @@ std::vector<ScreenFrame> ScenePipeline::geometry_parts(int frame, int channel, i
   return parts;
 }
 
-std::vector<ChannelOutput> ScenePipeline::render(int frame, const std::vector<int>& channels, const std::string& engine,
-                                                 const EngineOptions& options, int threads, int pipelines) const {
+std::vector<ChannelOutput> ImageGenerator::render(int frame, const std::vector<int>& channels,
+                                                  const std::string& engine, const EngineOptions& options, int threads,
+                                                  int pipelines) const {
   std::vector<ChannelOutput> out(channels.size());
   const int n = std::max(1, std::min<int>(threads, int(channels.size())));
   if (int(engines_.size()) < n) engines_.resize(std::size_t(n));

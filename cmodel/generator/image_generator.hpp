@@ -1,5 +1,6 @@
-// The per-frame data flow of the C model: scene manager (A) -> geometric processor (B) -> a raster
-// engine (C-E or the float reference), for every requested channel, with a report of what each
+// The image generator, the per-frame data flow of the C model (SPEC: "a scene manager feeds a
+// geometric processor, which feeds raster engines"): scene manager (A) -> geometric processor (B) ->
+// a raster engine (C-F or the float reference), for every requested channel, with a report of what each
 // stage did and took.
 #pragma once
 
@@ -21,13 +22,13 @@ struct ChannelOutput {
   nlohmann::ordered_json report;
 };
 
-class ScenePipeline {
+class ImageGenerator {
  public:
   // The world's quadtree is built once; culling selects how the scene manager walks it (seed 003's
   // line of sight by default; the visible objects are the same whatever the method).
   // visibility: stage A's V[i] by the hls/manager kernel (the default) or its twin.
-  explicit ScenePipeline(const Scene& scene, const CullSettings& culling = {},
-                         VisibilityArith visibility = VisibilityArith::kKernel);
+  explicit ImageGenerator(const Scene& scene, const CullSettings& culling = {},
+                          VisibilityArith visibility = VisibilityArith::kKernel);
   const Scene& scene() const { return scene_; }
 
   // Stages A and B for one channel: the polygon list a raster engine receives.
