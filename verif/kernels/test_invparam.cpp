@@ -69,7 +69,7 @@ class SceneMaker {
                 {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
                 {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}}};
   }
-  static EyeFace face(V3 n, V3 point) { return EyeFace{n.x, n.y, n.z, dotv(n, point), -1}; }
+  static EyeFace face(V3 n, V3 point) { return EyeFace{n.x, n.y, n.z, dotv(n, point), -1, {}}; }
 
   // A box: local [-h, h]^3 (or [0, 2 hx] along x with the x = 0 face through the eye).
   EyePolyhedron box(V3 centre, V3 h, bool face_through_eye) {
@@ -354,8 +354,8 @@ TEST(Invparam, InvparamDigest) {
 TEST(Invparam, HandScenes) {
   auto cube = [](double cz, double h) {
     EyePolyhedron p;
-    p.faces = {{1, 0, 0, h, -1},  {-1, 0, 0, h, -1},     {0, 1, 0, h, -1},
-               {0, -1, 0, h, -1}, {0, 0, 1, cz + h, -1}, {0, 0, -1, -cz + h, -1}};
+    p.faces = {{1, 0, 0, h, -1, {}},  {-1, 0, 0, h, -1, {}},     {0, 1, 0, h, -1, {}},
+               {0, -1, 0, h, -1, {}}, {0, 0, 1, cz + h, -1, {}}, {0, 0, -1, -cz + h, -1, {}}};
     return p;
   };
   const InvparamLattice lattice{16, 1};
@@ -400,19 +400,21 @@ void expect_corner(const std::vector<EyeFace>& faces, int i, bool hit, std::uint
 }
 
 TEST(Invparam, ExactCornerCases) {
-  const EyeFace front{0, 0, -1, -4, -1}, back{0, 0, 1, 6, -1}, up{0, -1, 0, 1, -1}, down{0, 1, 0, 1, -1};
+  const EyeFace front{0, 0, -1, -4, -1, {}}, back{0, 0, 1, 6, -1, {}}, up{0, -1, 0, 1, -1, {}},
+      down{0, 1, 0, 1, -1, {}};
   // Grazing an edge: the entry (front, tau 1/4) and the exit (x = 1/8, tau 1/4) coincide; the seed's
   // strict tau_in > tau_out makes it no hit. One sample to the left the ray passes inside.
-  const std::vector<EyeFace> graze = {front, back, {1, 0, 0, 0.125, -1}, {-1, 0, 0, 1, -1}, up, down};
+  const std::vector<EyeFace> graze = {front, back, {1, 0, 0, 0.125, -1, {}}, {-1, 0, 0, 1, -1, {}}, up, down};
   expect_corner(graze, 16, false, 0);
   expect_corner(graze, 15, true, 0);
   // Entering through an edge: two entry faces of equal tau; the PP keeps the later one (tau <= tau_in).
-  const EyeFace left{-1, 0, 0, -0.125, -1};
-  expect_corner({front, left, {1, 0, 0, 1, -1}, back, up, down}, 16, true, 1);
-  expect_corner({left, front, {1, 0, 0, 1, -1}, back, up, down}, 16, true, 1);
+  const EyeFace left{-1, 0, 0, -0.125, -1, {}};
+  expect_corner({front, left, {1, 0, 0, 1, -1, {}}, back, up, down}, 16, true, 1);
+  expect_corner({left, front, {1, 0, 0, 1, -1, {}}, back, up, down}, 16, true, 1);
   // A face parallel to the ray (tau = 0) with the eye outside it: a miss (Fig. 1 literally would
   // skip it and see the front face).
-  const std::vector<EyeFace> parallel = {front, back, {1, 0, -1.0 / 32, -0.125, -1}, {-1, 0, 0, 1, -1}, up, down};
+  const std::vector<EyeFace> parallel = {front, back, {1, 0, -1.0 / 32, -0.125, -1, {}}, {-1, 0, 0, 1, -1, {}},
+                                         up,    down};
   expect_corner(parallel, 16, false, 0);
   expect_corner(parallel, 15, true, 0);
 }
