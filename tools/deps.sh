@@ -7,6 +7,7 @@ set -euo pipefail
 render_packages=(
   g++ cmake ninja-build pkg-config  # toolchain
   libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev
+  libassimp-dev                   # scene models in any format assimp reads (OBJ, AC3D, 3DS, PLY, STL, glTF 2, ...)
 )
 test_packages=(
   python3                         # layering check, scene generators

@@ -254,7 +254,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
   }
 }
 
-std::string read_text_file(const std::string& file, long long max_bytes, const char* limit_option) {
+void check_input_file(const std::string& file, long long max_bytes, const char* limit_option) {
   if (file.empty()) throw InputError(file, "", "the path is empty");
   if (file.find('\0') != std::string::npos) throw InputError(file, "", "the path contains a NUL character");
   std::error_code ec;
@@ -268,6 +268,14 @@ std::string read_text_file(const std::string& file, long long max_bytes, const c
       std::to_string(max_bytes) + " bytes" + (*limit_option ? std::string(" (") + limit_option + ")" : std::string());
   if (!ec && (long long)size > max_bytes)
     throw InputError(file, "", "file is " + std::to_string(size) + " bytes, more than the limit of " + limit);
+}
+
+std::string read_text_file(const std::string& file, long long max_bytes, const char* limit_option) {
+  check_input_file(file, max_bytes, limit_option);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  const std::string limit =
+      std::to_string(max_bytes) + " bytes" + (*limit_option ? std::string(" (") + limit_option + ")" : std::string());
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "", "cannot open file (missing or unreadable)");
   // Read in chunks up to one byte past the limit, so a file that grows while it is read is caught.

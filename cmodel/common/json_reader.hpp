@@ -69,6 +69,10 @@ nlohmann::json read_json_file(const std::string& file);
 // The largest JSON input (scene, polygon list) read: its parsed document takes about ten times as
 // much memory.
 constexpr long long kMaxJsonFileBytes = 256ll << 20;
+// Throws InputError naming `file` when it is missing, not a regular file (a directory, a device
+// such as /dev/zero, a FIFO) or larger than `max_bytes`: the checks before any byte is read, shared
+// by readers that open the file themselves (model files through assimp).
+void check_input_file(const std::string& file, long long max_bytes, const char* limit_option = "");
 // Reads a whole regular file as text, at most `max_bytes` of it (memory stays bounded whatever the
 // path names); throws InputError naming `file` when it is missing, not a regular file (a
 // directory, a device such as /dev/zero, a FIFO), larger than the limit, or cannot be read.

@@ -1,6 +1,7 @@
 #include "scene/scene.hpp"
 
 #include <cmath>
+#include <string>
 
 #include <glm/trigonometric.hpp>
 
@@ -17,6 +18,12 @@ std::size_t Scene::light_point_count() const {
   std::size_t n = 0;
   for (const auto& o : objects) n += o.light_points.size();
   return n;
+}
+
+std::string model_face_place(const Subobject& s, std::size_t polygon) {
+  const ModelFaceRef& f = s.model_faces[polygon];
+  const std::string& name = s.model_meshes[f.mesh];
+  return (name.empty() ? "mesh " + std::to_string(f.mesh) : "mesh '" + name + "'") + " face " + std::to_string(f.face);
 }
 
 glm::dmat3 body_to_world(double heading_deg, double pitch_deg, double roll_deg) {

@@ -54,17 +54,38 @@ struct Polygon {
   std::vector<double> self_intensity;  // one per vertex when self_lit
 };
 
+// A model face in its file: the assimp mesh (scene order) and the face's index in it, as the file
+// gives it (before triangulation).
+struct ModelFaceRef {
+  std::uint32_t mesh = 0, face = 0;
+};
+
+// What loading a model did, for the report: faces triangulated (concave, non-planar, or more than
+// kMaxSceneVertices corners) and the triangles they became, zero-area faces skipped, points and
+// lines skipped (the pipeline draws polygons).
+struct ModelSummary {
+  std::size_t meshes = 0, faces = 0, triangulated_faces = 0, triangles = 0, degenerate_faces = 0, other_primitives = 0;
+  double load_ms = 0;
+};
+
 struct Subobject {
   std::string name;
   std::vector<glm::dvec3> vertices;  // object coordinates
   std::vector<Polygon> polygons;
   double crease_angle_deg = 50;  // vertex normals average only faces within this angle
   glm::dvec3 centre{0};          // object coordinates; used for depth sorting of subobjects
-  // An 'obj' subobject's model file and the line of each polygon's 'f' statement, so that errors
+  // A model subobject's file (as the scene names it), the JSON field that named it ("model" or its
+  // alias "obj"), its meshes' names and each polygon's mesh and face in the file, so that errors
   // found after loading (the polyhedron checks) can name them; empty for inline geometry.
-  std::string model;
-  std::vector<std::size_t> model_lines;
+  std::string model, model_field;
+  std::vector<std::string> model_meshes;
+  std::vector<ModelFaceRef> model_faces;
+  ModelSummary model_summary;
 };
+
+// "mesh 'name' face F" (or "mesh M face F" for an unnamed mesh): where a model subobject's polygon
+// comes from in its file.
+std::string model_face_place(const Subobject& s, std::size_t polygon);
 
 // One face plane of a convex polyhedron (stage F's input, SPEC F): n.r = offset in object
 // coordinates, n the outward unit normal, so the interior is n.r < offset. Coplanar polygons

@@ -1,12 +1,13 @@
 #include "scene/scene_loader.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 
 #include <glm/geometric.hpp>
 
 #include "common/json_reader.hpp"
-#include "scene/obj_loader.hpp"
+#include "scene/model_loader.hpp"
 #include "scene/polygon_checks.hpp"
 #include "scene/polyhedron.hpp"
 
@@ -103,57 +104,97 @@ Polygon read_polygon(const JsonNode& n, const Subobject& sub, const PolygonDefau
   return p;
 }
 
-// The model an 'obj' subobject names, resolved against the scene's folder; any error in it is
-// reported at the scene place that referenced it (objects[i].subobjects[j].obj), with the model's
-// own file and line.
-ObjMesh read_model(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
-  const std::string path = n.string();
-  if (path.empty()) n.fail("the model path is empty");
-  if (path.find('\0') != std::string::npos) n.fail("the model path contains a NUL character");
+// The factor a model's "unit" gives its coordinates: the length one unit of the file stands for.
+double read_unit(const JsonNode& n) {
+  static const std::pair<const char*, double> units[] = {{"m", 1},     {"cm", 0.01},   {"mm", 0.001},
+                                                         {"km", 1000}, {"in", 0.0254}, {"ft", 0.3048}};
+  const std::string u = n.string();
+  for (const auto& [name, metres] : units)
+    if (u == name) return metres;
+  n.fail("unknown unit '" + u + "' (m, cm, mm, km, in, ft)");
+}
+
+ModelOptions read_model_options(const JsonNode& n, const SceneLimits& limits) {
+  ModelOptions o;
+  o.max_bytes = limits.max_model_bytes;
+  if (auto up = n.find("up")) {
+    const std::string v = up->string();
+    if (v != "y" && v != "z") up->fail("must be \"y\" or \"z\", is \"" + v + "\"");
+    o.y_up = v == "y";
+  }
+  o.triangulate = n.boolean_or("triangulate", true);
+  return o;
+}
+
+// The model a subobject names ('model', or its alias 'obj'), resolved against the scene's folder;
+// any error in it is reported at the scene place that referenced it
+// (objects[i].subobjects[j].model), with the model's own file and the mesh and face.
+ModelMesh read_model(const JsonNode& n, const JsonNode& field, const std::string& scene_file,
+                     const SceneLimits& limits) {
+  const std::string path = field.string();
+  if (path.empty()) field.fail("the model path is empty");
+  if (path.find('\0') != std::string::npos) field.fail("the model path contains a NUL character");
+  const ModelOptions options = read_model_options(n, limits);
   std::filesystem::path model = path;
   if (model.is_relative()) model = std::filesystem::path(scene_file).parent_path() / model;
   const std::string file = model.lexically_normal().string();
   try {
-    return load_obj(file, limits.max_model_bytes);
+    return load_model(file, options);
   } catch (const InputError& e) {
-    n.fail("model '" + path + "'" + (e.where().empty() ? "" : " " + e.where()) + ": " + e.rule());
+    field.fail("model '" + path + "'" + (e.where().empty() ? "" : " " + e.where()) + ": " + e.rule());
   }
 }
 
+// A model subobject: the model's vertices as offset + scale x unit x v, its polygons with the
+// subobject's colour, or the material's diffuse colour when the subobject gives none.
+void read_model_subobject(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits,
+                          const PolygonDefaults& d, Subobject& s) {
+  if (n.has("obj") && n.has("model")) n.fail("'obj' is an alias of 'model': give one of them");
+  s.model_field = n.has("model") ? "model" : "obj";
+  if (n.has("vertices") || n.has("polygons"))
+    n.fail("a subobject takes either '" + s.model_field + "' or 'vertices' + 'polygons', not both");
+  const glm::dvec3 offset = n.find("offset") ? read_point(n.at("offset")) : glm::dvec3(0);
+  double scale = n.find("scale") ? n.at("scale").number(kMinModelScale, kMaxModelScale) : 1.0;
+  if (auto u = n.find("unit")) scale *= read_unit(*u);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ModelMesh mesh = read_model(n, n.at(s.model_field.c_str()), scene_file, limits);
+  s.model = n.at(s.model_field.c_str()).string();
+  s.model_meshes = mesh.mesh_names;
+  s.model_summary = mesh.summary;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const glm::dvec3 v = offset + scale * mesh.vertices[i];
+    if (!(std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) <= kMaxWorldCoordinate))
+      n.at(s.model_field.c_str())
+          .fail("model '" + s.model + "': vertex " + std::to_string(i) + " at (" + std::to_string(v.x) + ", " +
+                std::to_string(v.y) + ", " + std::to_string(v.z) + ") scaled and offset lies beyond " +
+                std::to_string(kMaxWorldCoordinate) + " m");
+    s.vertices.push_back(v);
+  }
+  const bool own_colour = n.has("colour");
+  for (const ModelFace& f : mesh.faces) {
+    s.model_faces.push_back(f.place);
+    Polygon p;
+    p.indices = f.indices;
+    p.colour = own_colour || !f.has_colour ? d.colour : f.colour;
+    p.opaque = d.opaque;
+    p.protect = d.protect;
+    s.polygons.push_back(std::move(p));
+  }
+  s.model_summary.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
 Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
-  n.allow_only(
-      {"name", "vertices", "polygons", "obj", "offset", "scale", "crease_angle", "colour", "opaque", "protected"});
+  n.allow_only({"name", "vertices", "polygons", "model", "obj", "offset", "scale", "unit", "up", "triangulate",
+                "crease_angle", "colour", "opaque", "protected"});
   Subobject s;
   if (auto nm = n.find("name")) s.name = nm->string();
   s.crease_angle_deg = n.find("crease_angle") ? n.at("crease_angle").number(0, 180) : 50.0;
   PolygonDefaults d = read_defaults(n);
-  if (n.has("obj")) {
-    if (n.has("vertices") || n.has("polygons"))
-      n.fail("a subobject takes either 'obj' or 'vertices' + 'polygons', not both");
-    const glm::dvec3 offset = n.find("offset") ? read_point(n.at("offset")) : glm::dvec3(0);
-    const double scale = n.find("scale") ? n.at("scale").number(kMinModelScale, kMaxModelScale) : 1.0;
-    const ObjMesh mesh = read_model(n.at("obj"), scene_file, limits);
-    s.model = n.at("obj").string();
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const glm::dvec3 v = offset + scale * mesh.vertices[i];
-      if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kMaxWorldCoordinate)
-        n.at("scale").fail("model vertex " + std::to_string(i + 1) + " scaled and offset lies beyond " +
-                           std::to_string(kMaxWorldCoordinate) + " m");
-      s.vertices.push_back(v);
-    }
-    for (std::size_t fi = 0; fi < mesh.faces.size(); ++fi) {
-      const auto& f = mesh.faces[fi];
-      if (f.size() > std::size_t(kMaxSceneVertices)) n.fail("model face has too many vertices");
-      s.model_lines.push_back(mesh.face_lines[fi]);
-      Polygon p;
-      p.indices = f;
-      p.colour = d.colour;
-      p.opaque = d.opaque;
-      p.protect = d.protect;
-      s.polygons.push_back(std::move(p));
-    }
+  if (n.has("model") || n.has("obj")) {
+    read_model_subobject(n, scene_file, limits, d, s);
   } else {
-    if (n.has("offset") || n.has("scale")) n.fail("'offset' and 'scale' apply only to 'obj' subobjects");
+    for (const char* key : {"offset", "scale", "unit", "up", "triangulate"})
+      if (n.has(key)) n.at(key).fail(std::string("'") + key + "' applies only to model subobjects");
     JsonNode verts = n.at("vertices");
     std::size_t nv = verts.array_size();
     if (nv < 3) verts.fail("a subobject needs at least 3 vertices");
@@ -184,7 +225,7 @@ LightPoint read_light_point(const JsonNode& n) {
 }
 
 // A "polyhedron": true object's rules (scene/polyhedron.hpp), reported at the polygon that breaks
-// them: its JSON path, or for a model the 'obj' field with the model's file and line.
+// them: its JSON path, or for a model its 'model' field with the model's file, mesh and face.
 void check_polyhedron(const JsonNode& n, Object& o) {
   const PolyhedronIssue issue = build_polyhedron(o);
   if (issue.rule.empty()) return;
@@ -193,8 +234,8 @@ void check_polyhedron(const JsonNode& n, Object& o) {
   const JsonNode sub = n.at("subobjects")[std::size_t(issue.subobject)];
   const Subobject& s = o.subobjects[std::size_t(issue.subobject)];
   if (s.model.empty()) sub.at("polygons")[std::size_t(issue.polygon)].fail(rule);
-  sub.at("obj").fail("model '" + s.model + "' line " + std::to_string(s.model_lines[std::size_t(issue.polygon)]) +
-                     ": " + rule);
+  sub.at(s.model_field.c_str())
+      .fail("model '" + s.model + "' " + model_face_place(s, std::size_t(issue.polygon)) + ": " + rule);
 }
 
 Object read_object(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {

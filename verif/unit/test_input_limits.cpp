@@ -13,7 +13,7 @@
 #include "frame/input_kind.hpp"
 #include "frame/screen_frame.hpp"
 #include "registry/engine_registry.hpp"
-#include "scene/obj_loader.hpp"
+#include "scene/model_loader.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -39,23 +39,33 @@ TEST(InputLimits, SunDirectionsOfAnyMagnitudeNormalise) {
   EXPECT_THROW(parse_scene(scene_with_sun("[0, 0, 0]"), "zero.json"), InputError);
 }
 
+ModelMesh obj_text(const std::string& text, const std::string& name) {
+  return parse_model(text.data(), text.size(), "obj", name);
+}
+
 TEST(InputLimits, ObjByteOrderMarkIsNotPartOfTheFirstVertex) {
   const std::string body = "v -1 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n";
-  const ObjMesh plain = parse_obj(body, "plain.obj");
-  const ObjMesh marked = parse_obj("\xEF\xBB\xBF" + body, "marked.obj");
+  const ModelMesh plain = obj_text(body, "plain.obj");
+  const ModelMesh marked = obj_text("\xEF\xBB\xBF" + body, "marked.obj");
   ASSERT_EQ(marked.vertices.size(), 3u);
-  EXPECT_EQ(marked.vertices[0], plain.vertices[0]);
-  EXPECT_EQ(marked.faces, plain.faces);
-  const ObjMesh shipped = load_obj(test::source_path("verif/bad_input/models/box_bom.obj"));
+  EXPECT_EQ(marked.vertices, plain.vertices);
+  EXPECT_EQ(marked.faces[0].indices, plain.faces[0].indices);
+  const ModelMesh shipped = load_model(test::source_path("verif/bad_input/models/box_bom.obj"));
   EXPECT_EQ(shipped.vertices[0], glm::dvec3(-1, 0, 0));
 }
 
-TEST(InputLimits, DenormalObjCoordinateIsATinyNumber) {
-  const ObjMesh m = parse_obj("v 4.9e-324 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "denormal.obj");
-  EXPECT_GT(m.vertices[0].x, 0.0);
-  EXPECT_LT(m.vertices[0].x, 1e-300);
-  EXPECT_THROW(parse_obj("v 1e999 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "inf.obj"), InputError);
-  EXPECT_THROW(parse_obj("v 2e8 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "far.obj"), InputError);
+// assimp keeps coordinates in single precision (ai_real is float in Debian's build): a denormal
+// double is 0 there, and a coordinate beyond the float range is refused as not finite.
+TEST(InputLimits, ModelCoordinatesAreFiniteFloats) {
+  const ModelMesh m = obj_text("v 4.9e-324 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "denormal.obj");
+  EXPECT_EQ(m.vertices[0].x, 0.0);
+  try {
+    obj_text("v 1e999 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\n", "inf.obj");
+    ADD_FAILURE() << "an infinite coordinate was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("inf.obj: mesh"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("vertex 0: coordinate is not a finite number"), std::string::npos) << e.what();
+  }
 }
 
 // A FIFO would block a reader forever: it is refused from its file type, before any open().
@@ -64,21 +74,23 @@ TEST(InputLimits, FifoAndDevicesAreRefusedWithoutReading) {
       (std::filesystem::temp_directory_path() / ("cig_fifo_" + std::to_string(::getpid()))).string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   try {
-    load_obj(fifo);
+    load_model(fifo);
     ADD_FAILURE() << "a FIFO was read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
   }
   std::filesystem::remove(fifo);
-  EXPECT_THROW(load_obj("/dev/urandom"), InputError);
+  EXPECT_THROW(load_model("/dev/urandom"), InputError);
   EXPECT_THROW(load_polygon_list("/dev/zero"), InputError);
 }
 
 TEST(InputLimits, ModelSizeLimitIsASetting) {
   const std::string box = test::source_path("verif/bad_input/models/box_bom.obj");
-  EXPECT_NO_THROW(load_obj(box));
+  EXPECT_NO_THROW(load_model(box));
   try {
-    load_obj(box, 16);
+    ModelOptions small;
+    small.max_bytes = 16;
+    load_model(box, small);
     ADD_FAILURE() << "a model above the limit was read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("more than the limit of 16 bytes (--max-model-mb)"), std::string::npos)

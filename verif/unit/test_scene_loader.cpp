@@ -6,7 +6,8 @@
 
 #include "common/error.hpp"
 #include "frame/screen_frame.hpp"
-#include "scene/obj_loader.hpp"
+#include "scene/model_loader.hpp"
+#include "scene/polygon_checks.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
@@ -74,44 +75,52 @@ TEST(SceneLoader, AirfieldMeetsTheDefaultSceneBrief) {
   EXPECT_GE(s.frame_count(), 100);
 }
 
-TEST(ObjLoader, ReadsIndexFormsAndNegativeIndices) {
+ModelMesh obj_text(const std::string& text, const std::string& name, const ModelOptions& o = {}) {
+  return parse_model(text.data(), text.size(), "obj", name, o);
+}
+
+std::vector<glm::dvec3> corners(const ModelMesh& m, std::size_t face) {
+  std::vector<glm::dvec3> v;
+  for (auto i : m.faces[face].indices) v.push_back(m.vertices[i]);
+  return v;
+}
+
+TEST(ModelLoader, ReadsObjIndexFormsAndNegativeIndices) {
   const std::string text =
       "# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
       "f 1/1/1 2/1/1 3/1/1 4/1/1\nf -4//1 -2//1 -1//1\ng group\nusemtl x\n";
-  ObjMesh m = parse_obj(text, "inline.obj");
-  ASSERT_EQ(m.vertices.size(), 4u);
+  const ModelMesh m = obj_text(text, "inline.obj");
+  ASSERT_EQ(m.vertices.size(), 4u);  // welded by position: the two faces share their corners
   ASSERT_EQ(m.faces.size(), 2u);
-  EXPECT_EQ(m.faces[0], (std::vector<std::uint32_t>{0, 1, 2, 3}));
-  EXPECT_EQ(m.faces[1], (std::vector<std::uint32_t>{0, 2, 3}));
+  EXPECT_EQ(corners(m, 0), (std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
+  EXPECT_EQ(corners(m, 1), (std::vector<glm::dvec3>{{0, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
+  EXPECT_EQ(m.faces[1].indices, (std::vector<std::uint32_t>{0, 2, 3}));
+  EXPECT_EQ(m.summary.triangulated_faces, 0u);  // a convex quad stays whole
 }
 
-TEST(ObjLoader, SkipsZeroAreaFacesButRejectsDents) {
-  ObjMesh m = parse_obj("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n", "z.obj");
+TEST(ModelLoader, SkipsZeroAreaFacesAndTriangulatesDents) {
+  const ModelMesh m = obj_text("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n", "z.obj");
   EXPECT_EQ(m.faces.size(), 1u);
-  EXPECT_EQ(m.degenerate_faces, 1u);
-  try {
-    parse_obj("v 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 0.5 0\nf 1 2 3 4\n", "dent.obj");
-    FAIL() << "a concave quad was accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where(), "line 5");
-    EXPECT_NE(std::string(e.what()).find("not convex"), std::string::npos);
+  EXPECT_EQ(m.summary.degenerate_faces, 1u);
+  const std::string dent = "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 1 0.5 0\nf 1 2 3 4\n";
+  const ModelMesh split = obj_text(dent, "dent.obj");
+  EXPECT_EQ(split.summary.triangulated_faces, 1u);
+  EXPECT_EQ(split.summary.triangles, 2u);
+  ASSERT_EQ(split.faces.size(), 2u);
+  for (std::size_t f = 0; f < 2; ++f) {
+    EXPECT_EQ(split.faces[f].place.face, 0u);  // both triangles name the face they came from
+    EXPECT_GT(newell_normal(corners(split, f)).z, 0) << "triangle " << f << " keeps the face's winding";
   }
-}
-
-// Real models from Debian's assimp-testmodels (installed by tools/deps.sh).
-TEST(ObjLoader, ReadsRealModels) {
-  const std::string dir = "/usr/share/assimp/models/OBJ/";
-  ASSERT_TRUE(std::filesystem::exists(dir + "box.obj")) << "install assimp-testmodels (tools/deps.sh)";
-  ObjMesh box = load_obj(dir + "box.obj");
-  EXPECT_EQ(box.vertices.size(), 8u);
-  EXPECT_EQ(box.faces.size(), 6u);
-  ObjMesh wuson = load_obj(dir + "WusonOBJ.obj");
-  EXPECT_EQ(wuson.faces.size() + wuson.degenerate_faces, 3732u);
-  ObjMesh spider = load_obj(dir + "spider.obj");
-  EXPECT_GT(spider.faces.size(), 1000u);
-  EXPECT_GT(spider.degenerate_faces, 0u);
-  // A 66-gon: more than a quad.
-  EXPECT_THROW(load_obj(dir + "concave_polygon.obj"), InputError);
+  ModelOptions refuse;
+  refuse.triangulate = false;
+  try {
+    obj_text(dent, "dent.obj", refuse);
+    FAIL() << "a concave quad was accepted without triangulation";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where(), "mesh 'defaultobject' face 0");
+    EXPECT_NE(std::string(e.what()).find("not convex"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"triangulate\": false"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Observer, InterpolatesBetweenKeyframesAlongTheShorterArc) {
