@@ -50,7 +50,7 @@ void OutputPlan::scene_inputs(const Scene& scene) {
   // Relative model paths resolve against the scene's folder, as the loader reads them.
   for (const std::string& m : models)
     input(fs::path(m).is_relative() ? (fs::path(scene.file).parent_path() / m).string() : m,
-          "an OBJ model the scene references");
+          "a model file the scene references");
 }
 
 void OutputPlan::file(const std::string& path, const std::string& option) {

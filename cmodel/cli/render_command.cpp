@@ -127,6 +127,28 @@ void check_frames(const Scene& scene, int a, int b, const std::vector<int>& chan
     }
 }
 
+// What loading each model subobject did (scenes/README.md, "Bring your own model").
+nlohmann::ordered_json models_report(const Scene& scene) {
+  nlohmann::ordered_json models = nlohmann::ordered_json::array();
+  for (std::size_t oi = 0; oi < scene.objects.size(); ++oi)
+    for (std::size_t si = 0; si < scene.objects[oi].subobjects.size(); ++si) {
+      const Subobject& s = scene.objects[oi].subobjects[si];
+      if (s.model.empty()) continue;
+      const ModelSummary& m = s.model_summary;
+      models.push_back({{"place", "objects[" + std::to_string(oi) + "].subobjects[" + std::to_string(si) + "]"},
+                        {"model", s.model},
+                        {"meshes", m.meshes},
+                        {"faces", m.faces},
+                        {"polygons", s.polygons.size()},
+                        {"triangulated_faces", m.triangulated_faces},
+                        {"triangles", m.triangles},
+                        {"degenerate_faces", m.degenerate_faces},
+                        {"points_and_lines", m.other_primitives},
+                        {"load_ms", m.load_ms}});
+    }
+  return models;
+}
+
 nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene, const EngineOptions& eo,
                                      double load_ms) {
   nlohmann::ordered_json report;
@@ -140,6 +162,7 @@ nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene,
   report["scene_polygons"] = scene.polygon_count();
   report["scene_light_points"] = scene.light_point_count();
   report["load_ms"] = load_ms;
+  report["models"] = models_report(scene);
   report["frames"] = nlohmann::ordered_json::array();
   return report;
 }

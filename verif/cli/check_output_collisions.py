@@ -27,7 +27,7 @@ CASES = {
     "render_report_is_scene": ("render hut.json --out D --report hut.json",
                                "--report: 'hut.json' is the scene file this run reads"),
     "render_report_is_model": ("render polyhedra.json --out D --report models/../models/crate.obj",
-                               "--report: 'models/../models/crate.obj' is an OBJ model the scene references"),
+                               "--report: 'models/../models/crate.obj' is a model file the scene references"),
     "render_report_is_image": ("render hut.json --out D --report D/frame_0000_panorama.png",
                                "--report: 'D/frame_0000_panorama.png' is one of the files --out writes"),
     "render_report_is_ids": ("render hut.json --out D --ids --frames 0:1 --report D/./frame_0001_ch0_left.ids",
@@ -81,7 +81,7 @@ COSIM_CASES = {
                               "--trace: 'r.json' is also --report's file"),
     "cosim_invparam_trace_is_model": ("cosim polyhedra.json --processor invparam --pps 8 --channel 1 "
                                       "--trace models/crate.obj",
-                                      "--trace: 'models/crate.obj' is an OBJ model the scene references"),
+                                      "--trace: 'models/crate.obj' is a model file the scene references"),
 }
 
 
