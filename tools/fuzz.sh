@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Long local fuzzing run: tools/fuzz.sh TARGET MINUTES (TARGET: scene_loader, obj_loader,
+# Long local fuzzing run: tools/fuzz.sh TARGET MINUTES (TARGET: scene_loader, model_loader,
 # polygon_list, raster, options; "all" runs each in turn). Builds the libFuzzer targets with clang,
 # ASan and UBSan in build-fuzz/ (tools/deps.sh installs clang) and runs the target's ctest for
 # MINUTES: each run starts from the seeds (scenes/, verif/bad_input/; verif/fuzz/CMakeLists.txt lists
@@ -18,7 +18,7 @@ if [ ! -f build-fuzz/CMakeCache.txt ]; then
     -DCIG_BUILD_TESTS=ON -DCIG_WITH_RTL=OFF
 fi
 targets=$1
-[ "$targets" = all ] && targets="scene_loader obj_loader polygon_list raster options"
+[ "$targets" = all ] && targets="scene_loader model_loader polygon_list raster options"
 for t in $targets; do
   cmake --build build-fuzz -j"$(nproc)" --target "fuzz_$t"
   cmake -DCIG_FUZZ_SECONDS=$(($2 * 60)) build-fuzz >/dev/null
