@@ -39,14 +39,19 @@ struct EngineArgs {
   EngineOptions options() const;
 };
 
-// --max-model-mb: the largest OBJ model a scene may reference (scenes/README.md, "Valid ranges").
+// --max-model-mb, --max-model-seconds: the largest model file a scene may reference, and how long
+// assimp may take to read one (scenes/README.md, "Valid ranges").
 struct ModelLimitArgs {
   int max_model_mb = int(kDefaultMaxModelBytes >> 20);
+  double max_model_seconds = kDefaultMaxModelSeconds;
   void add_to(CLI::App* app) {
-    app->add_option("--max-model-mb", max_model_mb, "largest OBJ model file read, in MiB (default 64)")
+    app->add_option("--max-model-mb", max_model_mb, "largest model file read, in MiB (default 64)")
         ->check(CLI::Range(1, 4096));
+    app->add_option("--max-model-seconds", max_model_seconds,
+                    "time assimp may take to read one model before the file is refused (default 60)")
+        ->check(CLI::Range(0.1, 3600.0));
   }
-  SceneLimits limits() const { return SceneLimits{(long long)max_model_mb << 20}; }
+  SceneLimits limits() const { return SceneLimits{(long long)max_model_mb << 20, max_model_seconds}; }
 };
 
 // --manager-unit: how stage A decides V[i] (manager/visibility_unit.hpp): the hls/manager kernel

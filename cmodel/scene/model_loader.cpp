@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <utility>
 
@@ -20,6 +21,7 @@
 #include <glm/matrix.hpp>
 
 #include "common/error.hpp"
+#include "common/isolated_call.hpp"
 #include "common/json_reader.hpp"
 #include "scene/polygon_checks.hpp"
 
@@ -340,10 +342,8 @@ ModelMesh flatten(Assimp::Importer& im, const CheckedIOSystem& io, const std::st
   return out;
 }
 
-}  // namespace
-
-ModelMesh load_model(const std::string& file, const ModelOptions& options) {
-  check_input_file(file, options.max_bytes, "--max-model-mb");
+// In this process: assimp's import and the flattening. Only the isolated child runs these.
+ModelMesh load_in_process(const std::string& file, const ModelOptions& options) {
   Assimp::Importer im;
   configure(im);
   auto* io = new CheckedIOSystem(options.max_bytes, true);
@@ -353,10 +353,8 @@ ModelMesh load_model(const std::string& file, const ModelOptions& options) {
   return flatten(im, *io, file, options);
 }
 
-ModelMesh parse_model(const void* data, std::size_t size, const std::string& format_hint, const std::string& file,
-                      const ModelOptions& options) {
-  if ((long long)size > options.max_bytes)
-    throw InputError(file, "", "the model is " + std::to_string(size) + " bytes, more than the limit");
+ModelMesh parse_in_process(const void* data, std::size_t size, const std::string& format_hint, const std::string& file,
+                           const ModelOptions& options) {
   Assimp::Importer im;
   configure(im);
   auto* io = new CheckedIOSystem(options.max_bytes, false);
@@ -366,6 +364,120 @@ ModelMesh parse_model(const void* data, std::size_t size, const std::string& for
   im.ReadFileFromMemory(static_cast<const char*>(data) + skip, size - skip, aiProcess_ValidateDataStructure,
                         format_hint.c_str());
   return flatten(im, *io, file, options);
+}
+
+// The child's answer through the pipe: 'M' and the flattened model, or 'E', the place, a NUL and
+// the rule of the InputError it threw. Native byte order: the reader is the same binary.
+class Writer {
+ public:
+  template <class T>
+  void pod(const T& v) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  void str(const std::string& s) {
+    pod(std::uint64_t(s.size()));
+    bytes += s;
+  }
+  std::string bytes;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& b) : b_(b) {}
+  template <class T>
+  T pod() {
+    T v{};
+    if (pos_ + sizeof v > b_.size()) throw std::runtime_error("truncated model record");
+    std::memcpy(&v, b_.data() + pos_, sizeof v);
+    pos_ += sizeof v;
+    return v;
+  }
+  std::uint64_t count(std::size_t each) {
+    const auto n = pod<std::uint64_t>();
+    if (n > (b_.size() - pos_) / each) throw std::runtime_error("corrupt model record");
+    return n;
+  }
+  std::string str() {
+    const auto n = count(1);
+    std::string s = b_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+
+ private:
+  const std::string& b_;
+  std::size_t pos_ = 1;  // after the tag
+};
+
+std::string serialize(const ModelMesh& m) {
+  Writer w;
+  w.bytes = "M";
+  w.pod(std::uint64_t(m.vertices.size()));
+  for (const glm::dvec3& v : m.vertices) w.pod(v);
+  w.pod(std::uint64_t(m.faces.size()));
+  for (const ModelFace& f : m.faces) {
+    w.pod(std::uint64_t(f.indices.size()));
+    for (auto i : f.indices) w.pod(i);
+    w.pod(char(f.has_colour));
+    w.pod(f.colour);
+    w.pod(f.place);
+  }
+  w.pod(std::uint64_t(m.mesh_names.size()));
+  for (const std::string& n : m.mesh_names) w.str(n);
+  w.pod(m.summary);
+  return w.bytes;
+}
+
+ModelMesh deserialize(const std::string& bytes) {
+  Reader r(bytes);
+  ModelMesh m;
+  m.vertices.resize(r.count(sizeof(glm::dvec3)));
+  for (glm::dvec3& v : m.vertices) v = r.pod<glm::dvec3>();
+  m.faces.resize(r.count(8));
+  for (ModelFace& f : m.faces) {
+    f.indices.resize(r.count(sizeof(std::uint32_t)));
+    for (auto& i : f.indices) i = r.pod<std::uint32_t>();
+    f.has_colour = r.pod<char>() != 0;
+    f.colour = r.pod<Rgb>();
+    f.place = r.pod<ModelFaceRef>();
+  }
+  m.mesh_names.resize(r.count(8));
+  for (std::string& n : m.mesh_names) n = r.str();
+  m.summary = r.pod<ModelSummary>();
+  return m;
+}
+
+// assimp runs in a child process (common/isolated_call): a crash, a hang or a runaway allocation
+// inside an importer becomes an InputError naming the file, not the end of the run.
+ModelMesh isolated(const std::string& file, const ModelOptions& options, const std::function<ModelMesh()>& load) {
+  IsolationLimits limits;
+  limits.seconds = options.seconds;
+  const IsolatedResult r = run_isolated(
+      [&] {
+        try {
+          return serialize(load());
+        } catch (const InputError& e) { return "E" + e.where() + '\0' + e.rule(); }
+      },
+      limits);
+  if (!r.ok && r.reason == "threw") throw InputError(file, "", "the model reader failed: " + r.bytes);
+  if (!r.ok) throw InputError(file, "", "assimp " + r.reason + " reading the model; the file is refused");
+  if (r.bytes.empty() || r.bytes[0] != 'E') return deserialize(r.bytes);
+  const std::size_t nul = r.bytes.find('\0');
+  throw InputError(file, r.bytes.substr(1, nul - 1), r.bytes.substr(nul + 1));
+}
+
+}  // namespace
+
+ModelMesh load_model(const std::string& file, const ModelOptions& options) {
+  check_input_file(file, options.max_bytes, "--max-model-mb");
+  return isolated(file, options, [&] { return load_in_process(file, options); });
+}
+
+ModelMesh parse_model(const void* data, std::size_t size, const std::string& format_hint, const std::string& file,
+                      const ModelOptions& options) {
+  if ((long long)size > options.max_bytes)
+    throw InputError(file, "", "the model is " + std::to_string(size) + " bytes, more than the limit");
+  return isolated(file, options, [&] { return parse_in_process(data, size, format_hint, file, options); });
 }
 
 }  // namespace cig

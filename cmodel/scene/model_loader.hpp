@@ -25,6 +25,9 @@ struct ModelOptions {
   // Faces the pipeline cannot take (more than kMaxSceneVertices corners, concave, non-planar, not
   // simple) are triangulated by assimp's post-processing; false refuses them.
   bool triangulate = true;
+  // assimp reads the model in a child process stopped after this many seconds (an importer that
+  // loops on a hostile file); a crash or an exhausted memory limit there refuses the file too.
+  double seconds = kDefaultMaxModelSeconds;
 };
 
 struct ModelFace {

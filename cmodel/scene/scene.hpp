@@ -43,6 +43,7 @@ constexpr double kMinScreenDepth = kMinNear, kMaxScreenDepth = kMaxDistance;
 constexpr double kMinListDepth = 1e-40, kMaxListDepth = 1e41;
 // A model file larger than this is rejected before it is read (a setting: --max-model-mb).
 constexpr long long kDefaultMaxModelBytes = 64ll << 20;
+constexpr double kDefaultMaxModelSeconds = 60;
 
 struct Polygon {
   std::vector<std::uint32_t> indices;  // into Subobject::vertices, counter-clockwise seen from the front

@@ -117,6 +117,7 @@ double read_unit(const JsonNode& n) {
 ModelOptions read_model_options(const JsonNode& n, const SceneLimits& limits) {
   ModelOptions o;
   o.max_bytes = limits.max_model_bytes;
+  o.seconds = limits.max_model_seconds;
   if (auto up = n.find("up")) {
     const std::string v = up->string();
     if (v != "y" && v != "z") up->fail("must be \"y\" or \"z\", is \"" + v + "\"");

@@ -8,9 +8,10 @@
 
 namespace cig {
 
-// Settings of the loader (cig's --max-model-mb).
+// Settings of the loader (cig's --max-model-mb and --max-model-seconds).
 struct SceneLimits {
-  long long max_model_bytes = kDefaultMaxModelBytes;  // largest OBJ model file read
+  long long max_model_bytes = kDefaultMaxModelBytes;   // largest model file read
+  double max_model_seconds = kDefaultMaxModelSeconds;  // time assimp may take to read one model
 };
 
 Scene load_scene(const std::string& file, const SceneLimits& limits = {});
