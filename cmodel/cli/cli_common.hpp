@@ -44,14 +44,26 @@ struct EngineArgs {
 struct ModelLimitArgs {
   int max_model_mb = int(kDefaultMaxModelBytes >> 20);
   double max_model_seconds = kDefaultMaxModelSeconds;
+  std::string priority_cache = default_priority_cache_dir();
+  bool modeller_order = false;
   void add_to(CLI::App* app) {
+    app->add_option("--priority-cache", priority_cache,
+                    "directory of compiled priority trees, by content hash (default ~/.cache/cig/priority; "
+                    "none: compile at every load)");
+    app->add_flag("--modeller-order", modeller_order,
+                  "no priority compiler: every subobject keeps its modeller's polygon order");
     app->add_option("--max-model-mb", max_model_mb, "largest model file read, in MiB (default 64)")
         ->check(CLI::Range(1, 4096));
     app->add_option("--max-model-seconds", max_model_seconds,
                     "time assimp may take to read one model before the file is refused (default 60)")
         ->check(CLI::Range(0.1, 3600.0));
   }
-  SceneLimits limits() const { return SceneLimits{(long long)max_model_mb << 20, max_model_seconds}; }
+  SceneLimits limits() const {
+    SceneLimits l{(long long)max_model_mb << 20, max_model_seconds, {}};
+    l.priority.enabled = !modeller_order;
+    l.priority.cache_dir = priority_cache == "none" ? "" : priority_cache;
+    return l;
+  }
 };
 
 // --manager-unit: how stage A decides V[i] (manager/visibility_unit.hpp): the hls/manager kernel

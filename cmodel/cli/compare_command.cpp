@@ -127,6 +127,8 @@ void print_totals(const ComparisonTotals& totals, std::size_t images, bool class
             << totals.worst_channel << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B "
             << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
             << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
+            << "      of those, " << totals.ids_differ_off_edges
+            << " at an edge in neither image (another surface away from any boundary)\n"
             << "      of those, " << totals.priority.ids_priority_vs_depth
             << " where the reference itself shows another polygon with visibility by priority order instead of"
                " the z-buffer (priority order against the z-buffer)\n";
@@ -151,6 +153,7 @@ nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share,
           {"pixels", all.pixels},
           {"pixels_over_2lsb", all.pixels_over_2lsb},
           {"ids_differ", totals.ids_differ},
+          {"ids_differ_off_edges", totals.ids_differ_off_edges},
           {"ids_priority_vs_depth", totals.priority.ids_priority_vs_depth},
           {"pixels_priority_colour", totals.priority.pixels_priority_colour},
           {"squared_error_share_ids_differ", ids_share / 100.0},

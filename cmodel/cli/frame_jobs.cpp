@@ -90,6 +90,7 @@ Comparison compare_run(int frame, int channel, const RasterImage& got, const Ras
           channel,
           compare_images(got.image, reference.image, got.ids, reference.ids),
           differing_ids(got.ids, reference.ids),
+          differing_ids_off_edges(got.ids, reference.ids),
           {}};
 }
 
@@ -106,6 +107,7 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
           {"max_abs", {c.error.max_abs[0], c.error.max_abs[1], c.error.max_abs[2]}},
           {"pixels_over_2lsb", c.error.pixels_over_2lsb},
           {"ids_differ", c.ids_differ},
+          {"ids_differ_off_edges", c.ids_differ_off_edges},
           {"ids_priority_vs_depth", c.priority.ids_priority_vs_depth},
           {"pixels_priority_colour", c.priority.pixels_priority_colour}};
 }
@@ -114,6 +116,7 @@ void ComparisonTotals::add(const Comparison& c) {
   all.add(c.error);
   ++images;
   ids_differ += c.ids_differ;
+  ids_differ_off_edges += c.ids_differ_off_edges;
   priority.add(c.priority);
   if (c.error.psnr() < min_psnr) {
     min_psnr = c.error.psnr();

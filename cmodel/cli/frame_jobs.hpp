@@ -65,6 +65,7 @@ struct Comparison {
   int frame = 0, channel = 0;
   ImageError error;
   long ids_differ = 0;
+  long ids_differ_off_edges = 0;  // of those, at an edge in neither image (image_compare.hpp)
   // Against a z-buffered reference: the part that comes from visibility by priority order.
   PriorityAttribution priority;
 };
@@ -77,7 +78,7 @@ nlohmann::ordered_json comparison_json(const Comparison& c);
 // Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.
 struct ComparisonTotals {
   ImageError all;
-  long images = 0, ids_differ = 0;
+  long images = 0, ids_differ = 0, ids_differ_off_edges = 0;
   PriorityAttribution priority;
   double min_psnr = 1e9;
   int worst_frame = 0, worst_channel = 0;

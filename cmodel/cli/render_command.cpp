@@ -127,6 +127,39 @@ void check_frames(const Scene& scene, int a, int b, const std::vector<int>& chan
     }
 }
 
+// The subobject's extent in object coordinates (after unit, scale, up and offset): where to put
+// the eye and how large the model came out.
+nlohmann::ordered_json bounds_report(const Subobject& s) {
+  glm::dvec3 lo(0), hi(0);
+  if (!s.vertices.empty()) lo = hi = s.vertices[0];
+  for (const glm::dvec3& v : s.vertices) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  return {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}};
+}
+
+}  // namespace
+
+// What the priority compiler did (scene/priority_compiler.hpp), for a subobject or the scene.
+nlohmann::ordered_json priority_report(const PriorityCompileSummary& p) {
+  return {{"subobjects", p.subobjects},
+          {"modeller_order_kept", p.ordered},
+          {"kept_not_valid_from_every_eye", p.kept_not_valid},
+          {"compiled", p.compiled},
+          {"too_large_kept", p.too_large},
+          {"polygons_before", p.polygons_before},
+          {"polygons_after", p.polygons_after},
+          {"splits", p.splits},
+          {"slivers_dropped", p.slivers_dropped},
+          {"tree_nodes", p.nodes},
+          {"cache_hits", p.cache_hits},
+          {"cache_writes", p.cache_writes},
+          {"ms", p.ms}};
+}
+
+namespace {
+
 // What loading each model subobject did (scenes/README.md, "Bring your own model").
 nlohmann::ordered_json models_report(const Scene& scene) {
   nlohmann::ordered_json models = nlohmann::ordered_json::array();
@@ -144,7 +177,9 @@ nlohmann::ordered_json models_report(const Scene& scene) {
                         {"triangles", m.triangles},
                         {"degenerate_faces", m.degenerate_faces},
                         {"points_and_lines", m.other_primitives},
-                        {"load_ms", m.load_ms}});
+                        {"load_ms", m.load_ms},
+                        {"bounds", bounds_report(s)},
+                        {"priority", priority_report(s.priority)}});
     }
   return models;
 }
@@ -163,6 +198,7 @@ nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene,
   report["scene_light_points"] = scene.light_point_count();
   report["load_ms"] = load_ms;
   report["models"] = models_report(scene);
+  report["priority_compiler"] = priority_report(scene.priority);
   report["frames"] = nlohmann::ordered_json::array();
   return report;
 }

@@ -10,6 +10,9 @@
 
 namespace cig::cli {
 
+// What the priority compiler did, for a subobject or the whole scene (render and compare reports).
+nlohmann::ordered_json priority_report(const PriorityCompileSummary& p);
+
 struct RenderCommand {
   CLI::App* sub = nullptr;
   std::string scene_file, out_dir = "out", report_file, frames_text;

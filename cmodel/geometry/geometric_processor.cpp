@@ -20,6 +20,40 @@ ScreenVertex project(const glm::dvec3& e, double intensity, double t) {
   return v;
 }
 
+std::uint64_t walk_priority_tree(const std::vector<BspNode>& tree, const WorldSubobject& w, const glm::dvec3& eye,
+                                 bool back_to_front, std::vector<std::uint32_t>& order) {
+  // Explicit stack of (node, its polygons are due): a partition node is pushed as "rest of the
+  // chain, far side, own polygons, near side", so that the near side is popped first.
+  const std::size_t start = order.size();
+  std::vector<std::pair<std::int32_t, bool>> stack{{0, false}};
+  std::uint64_t visited = 0;
+  while (!stack.empty()) {
+    const auto [k, emit] = stack.back();
+    stack.pop_back();
+    const BspNode& node = tree[std::size_t(k)];
+    if (emit) {
+      for (std::uint32_t p = node.first; p < node.first + node.count; ++p) order.push_back(p);
+      continue;
+    }
+    ++visited;
+    if (node.next >= 0) stack.push_back({node.next, false});  // the rest of the chain comes after
+    if (node.front < 0 && node.back < 0) {                    // a run: no plane to test
+      stack.push_back({k, true});
+      continue;
+    }
+    // The eye's side of the node's plane (that of its first polygon): nearer side first.
+    const bool eye_in_front = glm::dot(w.face_normal[node.first], eye) > w.face_offset[node.first];
+    const std::int32_t near_side = eye_in_front ? node.front : node.back;
+    const std::int32_t far_side = eye_in_front ? node.back : node.front;
+    if (far_side >= 0) stack.push_back({far_side, false});
+    stack.push_back({k, true});
+    if (near_side >= 0) stack.push_back({near_side, false});
+  }
+  // Farthest first is the same order reversed (a painter's order).
+  if (back_to_front) std::reverse(order.begin() + std::ptrdiff_t(start), order.end());
+  return visited;
+}
+
 namespace {
 
 // One channel's stage-B state: the view, its pyramid, and the list being built.
@@ -32,6 +66,7 @@ struct ChannelGeometry {
   GeometryStats& stats;
   std::vector<glm::dvec3> eye;  // the subobject's vertices in eye space, and their outcodes
   std::vector<std::uint8_t> code;
+  std::vector<std::uint32_t> order;  // the subobject's polygons in priority order
 
   // Light points first: they take priority over their own object's surfaces (a runway light over
   // the runway) but not over nearer objects, which come earlier in the list.
@@ -96,7 +131,8 @@ struct ChannelGeometry {
     return true;
   }
 
-  void subobject(const Subobject& sub, const WorldSubobject& w, std::uint32_t object_index, std::uint32_t si) {
+  void subobject(const Subobject& sub, const WorldSubobject& w, std::uint32_t object_index, std::uint32_t si,
+                 bool back_to_front) {
     eye.resize(w.vertices.size());
     code.resize(w.vertices.size());
     for (std::size_t i = 0; i < w.vertices.size(); ++i) {
@@ -104,7 +140,14 @@ struct ChannelGeometry {
       code[i] = pyramid.outcode(eye[i]);
     }
     stats.polygons_in += sub.polygons.size();
-    for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) {
+    order.clear();
+    if (sub.bsp.empty()) {
+      for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) order.push_back(pi);
+    } else {
+      ++stats.bsp_subobjects;
+      stats.bsp_nodes += walk_priority_tree(sub.bsp, w, view.eye, back_to_front, order);
+    }
+    for (std::uint32_t pi : order) {
       const Polygon& poly = sub.polygons[pi];
       ScreenPolygon sp;
       if (!polygon(poly, w, pi, sp)) continue;
@@ -175,13 +218,14 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
                     f,
                     stats,
                     {},
+                    {},
                     {}};
   for (const PriorityEntry& entry : list.objects) {
     const Object& object = scene.objects[entry.object];
     const WorldObject& wobject = db.objects[entry.object];
     if (entry.lights) g.light_points(object, wobject);
     for (std::uint32_t si : list.run(entry))
-      g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si);
+      g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si, list.back_to_front);
   }
   f.tan_half_fov = view.tan_half_fov;
   f.near = view.near;

@@ -20,8 +20,21 @@ struct GeometryStats {
   std::uint64_t polygons_out = 0;
   std::uint64_t vertices_out = 0;
   std::uint64_t light_points_in = 0, light_points_out = 0;
+  // Priority trees walked (scene/priority_compiler.hpp): nodes visited, each one plane test
+  // (3 multiplies, 3 adds and a compare: seed 000's operation units, see bsp_operations()).
+  std::uint64_t bsp_subobjects = 0, bsp_nodes = 0;
   double ms = 0;
 };
+
+// Arithmetic operations of the priority-tree walks (the manager's operation-count model): a node's
+// side test n.eye - d is 3 multiplies and 3 adds/subtracts, then a compare.
+constexpr std::uint64_t kBspNodeOperations = 7;
+
+// The order in which stage B takes a compiled subobject's polygons: the tree walked with the eye's
+// side of each node's plane, nearest subtree first (farthest first when back_to_front). Appends
+// polygon indices to `order`; returns the nodes visited.
+std::uint64_t walk_priority_tree(const std::vector<BspNode>& tree, const WorldSubobject& w, const glm::dvec3& eye,
+                                 bool back_to_front, std::vector<std::uint32_t>& order);
 
 ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const ChannelView& view,
                             const PriorityList& list, GeometryStats& stats);

@@ -47,6 +47,33 @@ ImageError compare_images(const Image& got, const Image& reference, const IdBuff
   return e;
 }
 
+namespace {
+
+bool at_edge(const IdBuffer& b, int x, int y) {
+  const std::int32_t id = b.id[std::size_t(y) * std::size_t(b.width) + std::size_t(x)];
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int u = x + dx, v = y + dy;
+      if (u >= 0 && v >= 0 && u < b.width && v < b.height &&
+          b.id[std::size_t(v) * std::size_t(b.width) + std::size_t(u)] != id)
+        return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+long differing_ids_off_edges(const IdBuffer& got, const IdBuffer& reference) {
+  if (got.id.size() != reference.id.size() || got.width != reference.width || got.id.empty()) return 0;
+  long n = 0;
+  for (int y = 0; y < got.height; ++y)
+    for (int x = 0; x < got.width; ++x) {
+      const std::size_t p = std::size_t(y) * std::size_t(got.width) + std::size_t(x);
+      if (got.id[p] != reference.id[p] && !at_edge(got, x, y) && !at_edge(reference, x, y)) ++n;
+    }
+  return n;
+}
+
 ImageError compare_images(const Image& got, const Image& reference) {
   return compare_images(got, reference, IdBuffer(), IdBuffer());
 }

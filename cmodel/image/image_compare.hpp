@@ -29,6 +29,11 @@ ImageError compare_images(const Image& got, const Image& reference, const IdBuff
 Image difference_image(const Image& got, const Image& reference, int gain);
 // Pixels whose id differs.
 long differing_ids(const IdBuffer& got, const IdBuffer& reference);
+// Of those, the pixels at an edge in neither image (an edge pixel has a neighbour, of its 8,
+// showing another id in the same image): where the engine shows another surface than the
+// reference away from any boundary, which visibility by a wrong priority order does, and coverage
+// of partly covered pixels or of a feature thinner than a pixel (an edge in one image) does not.
+long differing_ids_off_edges(const IdBuffer& got, const IdBuffer& reference);
 
 // What of an engine's error against a z-buffered reference comes from the engines' visibility by
 // priority order, found with the same reference rendered with visibility by priority (`priority`):

@@ -240,6 +240,7 @@ PriorityList manage_channel(const WorldDatabase& db, const ChannelView& view, Sc
   }
   if (!list.group_first.empty() && list.group_first.back() == list.objects.size()) list.group_first.pop_back();
   if (options.back_to_front) reverse_priority(list);
+  list.back_to_front = options.back_to_front;
   return list;
 }
 

@@ -54,6 +54,7 @@ struct PriorityList {
   std::vector<PriorityEntry> objects;      // priority order, highest first
   std::vector<std::uint32_t> subobjects;   // the runs, one after another (no allocation per run)
   std::vector<std::uint32_t> group_first;  // the entry each occlusion group (or lone object) starts at
+  bool back_to_front = false;              // farthest first: stage B walks priority trees the same way
   struct Run {
     const std::uint32_t *b, *e;
     const std::uint32_t* begin() const { return b; }

@@ -69,6 +69,31 @@ struct ModelSummary {
   double load_ms = 0;
 };
 
+// What the priority compiler (scene/priority_compiler.hpp) did at load, for the report: per
+// subobject (Subobject::priority) and for the whole scene (Scene::priority).
+struct PriorityCompileSummary {
+  std::size_t subobjects = 0;                           // subobjects examined
+  std::size_t ordered = 0;                              // the modeller's order is valid: kept
+  std::size_t kept_not_valid = 0;                       // "priority_order": "modeller", though not valid from every eye
+  std::size_t compiled = 0;                             // given a tree
+  std::size_t too_large = 0;                            // splitting grew beyond max_growth: modeller's order kept
+  std::size_t polygons_before = 0, polygons_after = 0;  // of the compiled subobjects
+  std::size_t splits = 0, nodes = 0, slivers_dropped = 0;
+  std::size_t cache_hits = 0, cache_writes = 0;
+  double ms = 0;
+};
+
+// A node of a subobject's priority tree, made by the priority compiler
+// (scene/priority_compiler.hpp). A partition node's polygons [first, first + count) lie in the
+// plane of polygon `first`, and front and back are the chains on either side of it (-1: none); a
+// run (front = back = -1) is polygons in an order valid from every eye. `next` continues the
+// chain: it is drawn after this node and its subtrees. Node 0 starts the root chain. Walking it
+// with the eye's side at each partition gives a visibility order from every eye position.
+struct BspNode {
+  std::uint32_t first = 0, count = 0;
+  std::int32_t front = -1, back = -1, next = -1;
+};
+
 struct Subobject {
   std::string name;
   std::vector<glm::dvec3> vertices;  // object coordinates
@@ -82,6 +107,13 @@ struct Subobject {
   std::vector<std::string> model_meshes;
   std::vector<ModelFaceRef> model_faces;
   ModelSummary model_summary;
+  // The priority tree over the polygons (empty: the modeller's order is a visibility order from
+  // every eye position, and is kept).
+  // "priority_order": "tree" (the default for models): compiled when its order is not a visibility
+  // order from every eye position; "modeller" (the default for inline polygons): kept as listed.
+  bool priority_tree = false;
+  std::vector<BspNode> bsp;
+  PriorityCompileSummary priority;
 };
 
 // "mesh 'name' face F" (or "mesh M face F" for an unnamed mesh): where a model subobject's polygon
@@ -180,6 +212,7 @@ struct Scene {
   LightPointRendering light_rendering;
   std::vector<Keyframe> keyframes;  // strictly increasing frames, the first at frame 0
   std::vector<Object> objects;
+  PriorityCompileSummary priority;
 
   int frame_count() const { return keyframes.empty() ? 0 : keyframes.back().frame + 1; }
   std::size_t polygon_count() const;

@@ -186,9 +186,16 @@ void read_model_subobject(const JsonNode& n, const std::string& scene_file, cons
 
 Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const SceneLimits& limits) {
   n.allow_only({"name", "vertices", "polygons", "model", "obj", "offset", "scale", "unit", "up", "triangulate",
-                "crease_angle", "colour", "opaque", "protected"});
+                "crease_angle", "colour", "opaque", "protected", "priority_order"});
   Subobject s;
   if (auto nm = n.find("name")) s.name = nm->string();
+  // A model file's face order is nobody's priority order; an inline list is the modeller's.
+  s.priority_tree = n.has("model") || n.has("obj");
+  if (auto po = n.find("priority_order")) {
+    const std::string v = po->string();
+    if (v != "modeller" && v != "tree") po->fail("must be \"modeller\" or \"tree\", is \"" + v + "\"");
+    s.priority_tree = v == "tree";
+  }
   s.crease_angle_deg = n.find("crease_angle") ? n.at("crease_angle").number(0, 180) : 50.0;
   PolygonDefaults d = read_defaults(n);
   if (n.has("model") || n.has("obj")) {
@@ -398,6 +405,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
   JsonNode objs = root.at("objects");
   std::size_t no = objs.array_size();
   for (std::size_t i = 0; i < no; ++i) s.objects.push_back(read_object(objs[i], file, limits));
+  s.priority = compile_priorities(s, limits.priority);
   return s;
 }
 

@@ -4,14 +4,17 @@
 
 #include <string>
 
+#include "scene/priority_compiler.hpp"
 #include "scene/scene.hpp"
 
 namespace cig {
 
-// Settings of the loader (cig's --max-model-mb and --max-model-seconds).
+// Settings of the loader (cig's --max-model-mb, --max-model-seconds, --priority-cache and
+// --modeller-order).
 struct SceneLimits {
   long long max_model_bytes = kDefaultMaxModelBytes;   // largest model file read
   double max_model_seconds = kDefaultMaxModelSeconds;  // time assimp may take to read one model
+  PriorityCompilerOptions priority;                    // the priority compiler, run after loading
 };
 
 Scene load_scene(const std::string& file, const SceneLimits& limits = {});
