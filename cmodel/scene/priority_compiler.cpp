@@ -22,7 +22,7 @@ namespace {
 
 // Changes whenever the compiler's output for the same input would change: cached trees of an
 // older compiler are not read.
-constexpr std::uint64_t kCompilerVersion = 2;
+constexpr std::uint64_t kCompilerVersion = 3;
 // Beyond this many polygons the O(n^2) pair test is not run: the subobject is compiled (a tree of
 // a part whose order was valid splits nothing, it only reorders).
 constexpr std::size_t kPairTestLimit = 2048;
@@ -31,7 +31,6 @@ constexpr std::size_t kPairTestLimit = 2048;
 // triangles): 8 candidates grow it to 2.34x, 32 to 2.07x for 1.2x the compile time; weighting
 // splits more (32, 128) grows it more (unbalanced trees split more further down).
 constexpr std::size_t kCandidates = 32;
-constexpr std::size_t kSplitAllowance = 1024;
 // Sets of up to this many polygons are ordered by the components of their "may hide" graph
 // (O(n^2) pair tests and edges): only the polygons of a cycle are split, and only by the planes
 // of that cycle. Larger sets are partitioned whole first.
@@ -89,7 +88,7 @@ struct Work {
   std::vector<glm::dvec3> vertices;
   std::vector<Polygon> polygons;
   std::vector<ModelFaceRef> faces;                                              // empty for inline geometry
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_point;  // split edge -> vertex
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_point;  // edge cut by this plane -> vertex
   std::size_t splits = 0, slivers = 0;
   double eps = 0;
 };
@@ -323,6 +322,7 @@ std::pair<Plane, std::uint32_t> choose_plane(const Work& w, const std::vector<st
 // its diameter), so every node takes at least one polygon and the build ends.
 Partition partition(Work& w, const Plane& pl, std::uint32_t splitter, const std::vector<std::uint32_t>& polys) {
   Partition part;
+  w.edge_point.clear();  // split points are shared within one plane's cut only
   for (auto q : polys) {
     const int side = q == splitter ? kOn : classify(pl, w.vertices, w.polygons[q], w.eps);
     if (side == kOn) part.on.push_back(q);
@@ -458,6 +458,7 @@ std::uint64_t content_key(const Subobject& s, const PriorityCompilerOptions& o) 
   Bytes in;
   in.pod(kCompilerVersion);
   in.pod(o.max_growth);
+  in.pod(std::uint64_t(o.split_allowance));
   put_polygons(in, s.vertices, s.polygons);
   return fnv1a(in.b);
 }
@@ -601,7 +602,7 @@ bool compile_subobject(Subobject& s, const PriorityCompilerOptions& o, PriorityC
   if (s.bsp.empty()) {
     Work w{s.vertices, s.polygons, s.model_faces, {}, 0, 0, on_tolerance(s.vertices)};
     std::vector<BuildNode> nodes;
-    const std::size_t limit = std::size_t(o.max_growth * double(before)) + kSplitAllowance;
+    const std::size_t limit = std::size_t(o.max_growth * double(before)) + o.split_allowance;
     if (!build_tree(w, limit, nodes)) return false;
     emit(w, nodes, s);
     splits = w.splits;

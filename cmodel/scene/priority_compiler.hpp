@@ -6,6 +6,8 @@
 // partitioning tree (Subobject::bsp), splitting polygons that straddle a partition plane; stage B
 // walks the tree per view (geometry/priority_walk.hpp), which gives a visibility order.
 //
+// Which subobjects: a model's ("priority_order": "tree", the default for "model") when its order
+// is not valid; an inline list ("modeller", its default) is kept and, when not valid, counted.
 // A subobject is left alone when its order is already valid: for every pair i listed before j,
 // either j lies wholly behind-or-on i's plane or i lies wholly in-front-or-on j's plane (then j
 // can never come between the eye and i, whatever the eye). So no split happens where none is needed.
@@ -25,9 +27,10 @@ namespace cig {
 struct PriorityCompilerOptions {
   bool enabled = true;
   std::string cache_dir;  // "" : no cache
-  // A subobject whose splitting would grow it beyond this factor (plus kSplitAllowance polygons)
+  // A subobject whose splitting would grow it beyond this factor (plus split_allowance polygons)
   // keeps its modeller's order and is counted as not compiled.
   double max_growth = 8;
+  std::size_t split_allowance = 1024;
 };
 
 // Default cache directory: $XDG_CACHE_HOME/cig/priority, or $HOME/.cache/cig/priority, or "" (none).
