@@ -60,8 +60,9 @@ nlohmann::ordered_json geometry_report(const GeometryStats& gs) {
           {"light_points_out", gs.light_points_out},
           {"priority_trees",
            {{"subobjects", gs.bsp_subobjects},
-            {"nodes_visited", gs.bsp_nodes},
-            {"operations", gs.bsp_nodes * kBspNodeOperations}}},
+            {"nodes_visited", gs.bsp.nodes},
+            {"partition_tests", gs.bsp.partitions},
+            {"operations", {{"L", gs.bsp.L}, {"C", gs.bsp.C}, {"A", gs.bsp.A}, {"M", gs.bsp.M}}}}},
           {"ms", gs.ms}};
 }
 

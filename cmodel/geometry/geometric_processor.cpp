@@ -20,38 +20,50 @@ ScreenVertex project(const glm::dvec3& e, double intensity, double t) {
   return v;
 }
 
-std::uint64_t walk_priority_tree(const std::vector<BspNode>& tree, const WorldSubobject& w, const glm::dvec3& eye,
-                                 bool back_to_front, std::vector<std::uint32_t>& order) {
+PriorityWalkCost walk_priority_tree(const std::vector<BspNode>& tree, const WorldSubobject& w, const glm::dvec3& eye,
+                                    bool back_to_front, std::vector<std::uint32_t>& order) {
   // Explicit stack of (node, its polygons are due): a partition node is pushed as "rest of the
   // chain, far side, own polygons, near side", so that the near side is popped first.
   const std::size_t start = order.size();
   std::vector<std::pair<std::int32_t, bool>> stack{{0, false}};
-  std::uint64_t visited = 0;
+  PriorityWalkCost cost;
+  auto push = [&](std::int32_t k, bool emit) {
+    stack.push_back({k, emit});
+    cost.L += 2;  // pushed and, later, popped
+  };
+  cost.L += 2;
   while (!stack.empty()) {
     const auto [k, emit] = stack.back();
     stack.pop_back();
     const BspNode& node = tree[std::size_t(k)];
     if (emit) {
       for (std::uint32_t p = node.first; p < node.first + node.count; ++p) order.push_back(p);
+      cost.L += node.count;
       continue;
     }
-    ++visited;
-    if (node.next >= 0) stack.push_back({node.next, false});  // the rest of the chain comes after
-    if (node.front < 0 && node.back < 0) {                    // a run: no plane to test
-      stack.push_back({k, true});
+    ++cost.nodes;
+    cost.L += 5;
+    ++cost.C;
+    if (node.next >= 0) push(node.next, false);  // the rest of the chain comes after
+    if (node.front < 0 && node.back < 0) {       // a run: no plane to test
+      push(k, true);
       continue;
     }
     // The eye's side of the node's plane (that of its first polygon): nearer side first.
+    ++cost.partitions;
+    cost.L += 4;
+    cost.M += 3;
+    cost.A += 2;
     const bool eye_in_front = glm::dot(w.face_normal[node.first], eye) > w.face_offset[node.first];
     const std::int32_t near_side = eye_in_front ? node.front : node.back;
     const std::int32_t far_side = eye_in_front ? node.back : node.front;
-    if (far_side >= 0) stack.push_back({far_side, false});
-    stack.push_back({k, true});
-    if (near_side >= 0) stack.push_back({near_side, false});
+    if (far_side >= 0) push(far_side, false);
+    push(k, true);
+    if (near_side >= 0) push(near_side, false);
   }
   // Farthest first is the same order reversed (a painter's order).
   if (back_to_front) std::reverse(order.begin() + std::ptrdiff_t(start), order.end());
-  return visited;
+  return cost;
 }
 
 namespace {
@@ -145,7 +157,7 @@ struct ChannelGeometry {
       for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) order.push_back(pi);
     } else {
       ++stats.bsp_subobjects;
-      stats.bsp_nodes += walk_priority_tree(sub.bsp, w, view.eye, back_to_front, order);
+      stats.bsp.add(walk_priority_tree(sub.bsp, w, view.eye, back_to_front, order));
     }
     for (std::uint32_t pi : order) {
       const Polygon& poly = sub.polygons[pi];

@@ -11,6 +11,24 @@
 
 namespace cig {
 
+// The cost of walking priority trees in the units of seed 000's operation table (SPEC A.7,
+// studies/operation_counts.hpp): L memory reads and writes, C comparisons with a conditional jump,
+// A additions, M multiplications. Per node: its record read (first, count, front, back, next: 5 L)
+// and its stack entry pushed and popped (2 L); a partition node's side test n.eye against the
+// offset reads the plane (4 L) and is 3 M, 2 A and 1 C; a run's "no children" test is 1 C; every
+// polygon put on the list is 1 L.
+struct PriorityWalkCost {
+  std::uint64_t nodes = 0, partitions = 0, L = 0, C = 0, A = 0, M = 0;
+  void add(const PriorityWalkCost& o) {
+    nodes += o.nodes;
+    partitions += o.partitions;
+    L += o.L;
+    C += o.C;
+    A += o.A;
+    M += o.M;
+  }
+};
+
 struct GeometryStats {
   std::uint64_t polygons_in = 0;  // polygons of the visible subobjects
   std::uint64_t backfacing = 0;   // culled as back faces
@@ -20,21 +38,18 @@ struct GeometryStats {
   std::uint64_t polygons_out = 0;
   std::uint64_t vertices_out = 0;
   std::uint64_t light_points_in = 0, light_points_out = 0;
-  // Priority trees walked (scene/priority_compiler.hpp): nodes visited, each one plane test
-  // (3 multiplies, 3 adds and a compare: seed 000's operation units, see bsp_operations()).
-  std::uint64_t bsp_subobjects = 0, bsp_nodes = 0;
+  // Priority trees walked (scene/priority_compiler.hpp): subobjects, nodes visited, and the walk's
+  // operations in seed 000's units (walk_priority_tree counts them).
+  std::uint64_t bsp_subobjects = 0;
+  PriorityWalkCost bsp;
   double ms = 0;
 };
 
-// Arithmetic operations of the priority-tree walks (the manager's operation-count model): a node's
-// side test n.eye - d is 3 multiplies and 3 adds/subtracts, then a compare.
-constexpr std::uint64_t kBspNodeOperations = 7;
-
 // The order in which stage B takes a compiled subobject's polygons: the tree walked with the eye's
 // side of each node's plane, nearest subtree first (farthest first when back_to_front). Appends
-// polygon indices to `order`; returns the nodes visited.
-std::uint64_t walk_priority_tree(const std::vector<BspNode>& tree, const WorldSubobject& w, const glm::dvec3& eye,
-                                 bool back_to_front, std::vector<std::uint32_t>& order);
+// polygon indices to `order`; returns what the walk cost.
+PriorityWalkCost walk_priority_tree(const std::vector<BspNode>& tree, const WorldSubobject& w, const glm::dvec3& eye,
+                                    bool back_to_front, std::vector<std::uint32_t>& order);
 
 ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const ChannelView& view,
                             const PriorityList& list, GeometryStats& stats);
