@@ -153,6 +153,9 @@ nlohmann::ordered_json priority_report(const PriorityCompileSummary& p) {
           {"splits", p.splits},
           {"slivers_dropped", p.slivers_dropped},
           {"tree_nodes", p.nodes},
+          {"occlusion_groups_merged", p.groups},
+          {"objects_in_merged_groups", p.grouped_objects},
+          {"group_crease_angle_changed", p.group_crease_changed},
           {"cache_hits", p.cache_hits},
           {"cache_writes", p.cache_writes},
           {"ms", p.ms}};

@@ -617,6 +617,111 @@ bool compile_subobject(Subobject& s, const PriorityCompilerOptions& o, PriorityC
   return true;
 }
 
+// ---- Occlusion groups of models: one tree over the group.
+
+struct Placed {
+  glm::dvec3 centre;
+  double radius;
+  glm::dmat3 rot;
+};
+
+Placed placed(const Object& o) {
+  const glm::dmat3 rot = body_to_world(o.pose.heading_deg, o.pose.pitch_deg, o.pose.roll_deg);
+  return {rot * o.sphere_centre + o.pose.position, o.sphere_radius, rot};
+}
+
+bool has_tree_subobject(const Object& o) {
+  return !o.polyhedron &&
+         std::any_of(o.subobjects.begin(), o.subobjects.end(), [](const Subobject& s) { return s.priority_tree; });
+}
+
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// The group's objects as one object at the first one's position: every subobject's polygons in
+// one subobject (each member's vertices kept apart, so Gouraud normals average as before), light
+// points placed alike. The first member's crease angle serves all (counted when they differ).
+Object merge_group(const Scene& scene, const std::vector<std::size_t>& members, PriorityCompileSummary& sum) {
+  const Object& first = scene.objects[members[0]];
+  Object g;
+  g.layer = first.layer;
+  g.pose.position = first.pose.position;
+  Subobject merged;
+  merged.name = "group";
+  merged.priority_tree = true;
+  merged.crease_angle_deg = first.subobjects[0].crease_angle_deg;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const Object& o = scene.objects[members[k]];
+    const glm::dmat3 rot = body_to_world(o.pose.heading_deg, o.pose.pitch_deg, o.pose.roll_deg);
+    const glm::dvec3 shift = o.pose.position - first.pose.position;
+    g.name += (k ? "+" : "") + o.name;
+    for (const Subobject& so : o.subobjects) {
+      if (so.crease_angle_deg != merged.crease_angle_deg) ++sum.group_crease_changed;
+      const std::uint32_t base = std::uint32_t(merged.vertices.size());
+      for (const glm::dvec3& v : so.vertices) merged.vertices.push_back(rot * v + shift);
+      for (Polygon p : so.polygons) {
+        for (auto& i : p.indices) i += base;
+        merged.polygons.push_back(std::move(p));
+      }
+    }
+    for (LightPoint l : o.light_points) {
+      l.position = rot * l.position + shift;
+      g.light_points.push_back(l);
+    }
+  }
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& v : merged.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  for (const LightPoint& l : g.light_points) lo = glm::min(lo, l.position), hi = glm::max(hi, l.position);
+  g.sphere_centre = merged.centre = 0.5 * (lo + hi);
+  for (const glm::dvec3& v : merged.vertices)
+    g.sphere_radius = std::max(g.sphere_radius, glm::length(v - g.sphere_centre));
+  for (const LightPoint& l : g.light_points)
+    g.sphere_radius = std::max(g.sphere_radius, glm::length(l.position - g.sphere_centre));
+  g.sphere_radius *= 1 + 1e-12;
+  g.subobjects.push_back(std::move(merged));
+  return g;
+}
+
+// Objects of one layer whose bounding spheres overlap, one of them at least a model (a subobject
+// with "priority_order": "tree"), interpenetrate or may: seed 000 would make them an occlusion
+// group and merge their lists by distance, which orders parts, not polygons. They become one
+// object whose polygons get one tree. Groups of inline objects only keep seed 000's merge.
+void group_interpenetrating(Scene& scene, PriorityCompileSummary& sum) {
+  const std::size_t n = scene.objects.size();
+  std::vector<std::size_t> parent(n), models;
+  std::vector<Placed> where;
+  for (std::size_t i = 0; i < n; ++i) {
+    parent[i] = i;
+    where.push_back(placed(scene.objects[i]));
+    if (has_tree_subobject(scene.objects[i])) models.push_back(i);
+  }
+  if (models.empty()) return;
+  for (std::size_t m : models)
+    for (std::size_t j = 0; j < n; ++j) {
+      const Object& o = scene.objects[j];
+      if (j == m || o.polyhedron || o.subobjects.empty() || o.layer != scene.objects[m].layer) continue;
+      if (glm::length(where[m].centre - where[j].centre) < where[m].radius + where[j].radius)
+        parent[find_root(parent, m)] = find_root(parent, j);
+    }
+  std::vector<std::vector<std::size_t>> groups(n);
+  for (std::size_t i = 0; i < n; ++i) groups[find_root(parent, i)].push_back(i);
+  std::vector<Object> out;
+  std::vector<bool> merged(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::vector<std::size_t>& g = groups[find_root(parent, i)];
+    if (g.size() < 2) {
+      out.push_back(std::move(scene.objects[i]));
+    } else if (g[0] == i) {  // the group takes its first member's place in the list
+      out.push_back(merge_group(scene, g, sum));
+      ++sum.groups;
+      sum.grouped_objects += g.size();
+    }
+  }
+  scene.objects = std::move(out);
+}
+
 }  // namespace
 
 bool modeller_order_valid(const Subobject& s) {
@@ -645,6 +750,9 @@ std::string default_priority_cache_dir() {
 namespace {
 
 void add(PriorityCompileSummary& to, const PriorityCompileSummary& s) {
+  to.groups += s.groups;
+  to.grouped_objects += s.grouped_objects;
+  to.group_crease_changed += s.group_crease_changed;
   to.subobjects += s.subobjects;
   to.ordered += s.ordered;
   to.kept_not_valid += s.kept_not_valid;
@@ -665,6 +773,7 @@ PriorityCompileSummary compile_priorities(Scene& scene, const PriorityCompilerOp
   PriorityCompileSummary sum;
   if (!options.enabled) return sum;
   const auto t0 = Clock::now();
+  group_interpenetrating(scene, sum);
   for (Object& o : scene.objects) {
     if (o.polyhedron) continue;  // convex: any order is a visibility order (stage F's objects)
     for (Subobject& s : o.subobjects) {

@@ -204,6 +204,29 @@ TEST(PriorityCompiler, ASoupOfTrianglesIsOrderedFromEveryEye) {
   }
 }
 
+TEST(PriorityCompiler, InterpenetratingObjectsGetOneTree) {
+  // Two soups in two objects whose spheres overlap (one turned and moved), and a third far away.
+  nlohmann::json s = nlohmann::json::parse(scene_json({triangle_soup(30, 21)}));
+  nlohmann::json b = {{"name", "b"}, {"position", {3, 1, 0}}, {"heading", 40}, {"subobjects", {triangle_soup(30, 22)}}};
+  nlohmann::json far = {{"name", "far"}, {"position", {500, 0, 0}}, {"subobjects", {triangle_soup(10, 23)}}};
+  b["subobjects"] = nlohmann::json::array({triangle_soup(30, 22)});
+  far["subobjects"] = nlohmann::json::array({triangle_soup(10, 23)});
+  s["objects"].push_back(b);
+  s["objects"].push_back(far);
+  const Scene scene = parse_scene(s.dump(), "group.json", no_cache());
+  EXPECT_EQ(scene.priority.groups, 1u);
+  EXPECT_EQ(scene.priority.grouped_objects, 2u);
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(scene.objects[0].name, "o+b");
+  ASSERT_EQ(scene.objects[0].subobjects.size(), 1u);
+  EXPECT_EQ(scene.objects[1].name, "far");
+  const WorldDatabase db = build_world_database(scene);
+  for (const V& e : eyes(31, 10, 25)) {
+    const V eye_object = e;  // the group sits at the first member's position, the origin, unturned
+    EXPECT_EQ(order_violations(scene.objects[0].subobjects[0], walk(scene, db, e), eye_object, 12), 0);
+  }
+}
+
 TEST(PriorityCompiler, AValidOrderIsKeptAndAnInlineListIsNotCompiled) {
   // A closed box: convex, every order valid; no tree, no split, the list as written.
   const nlohmann::json box = {
