@@ -187,17 +187,106 @@ PolyhedronIssue face_planes(const Mesh& m, double tol, Object& o) {
   return {};
 }
 
-// Convex: every vertex on the inner side of every face plane (or within tol outside it).
+// A polygon of the object in a message: "polygon 3" (inline), "mesh 'm' face 7" (a model's, its
+// face in the file), with "of subobject 1" when the object has several subobjects.
+std::string polygon_text(const Object& o, const MeshPolygon& mp) {
+  const Subobject& s = o.subobjects[std::size_t(mp.subobject)];
+  std::string t =
+      s.model.empty() ? "polygon " + std::to_string(mp.polygon) : model_face_place(s, std::size_t(mp.polygon));
+  if (o.subobjects.size() > 1)
+    t += " of subobject " + std::to_string(mp.subobject) + (s.model.empty() ? "" : " (model '" + s.model + "')");
+  return t;
+}
+
+// The two polygons meeting at an edge: "polygons 3 and 8" for two inline polygons of a one-subobject
+// object, "mesh 'm' face 3 and mesh 'm' face 8" (or with subobjects) otherwise, "two triangles of
+// mesh 'm' face 3" when both come from one model face triangulated at load.
+std::string polygon_pair_text(const Object& o, const MeshPolygon& a, const MeshPolygon& b) {
+  const Subobject& s = o.subobjects[std::size_t(a.subobject)];
+  if (o.subobjects.size() == 1 && s.model.empty())
+    return "polygons " + std::to_string(a.polygon) + " and " + std::to_string(b.polygon);
+  const std::string ta = polygon_text(o, a), tb = polygon_text(o, b);
+  if (ta == tb) return "two triangles of " + ta + " (triangulated at load)";
+  return ta + " and " + tb;
+}
+
+// One end of an edge: "vertex 12 (x, y, z)", the index in the polygon's subobject's "vertices"
+// (as "indices" name it); a model's vertices by position only (object coordinates), since the
+// file's own vertex numbering does not survive loading.
+std::string vertex_text(const Object& o, const MeshPolygon& mp, std::size_t corner, const glm::dvec3& p) {
+  const Subobject& s = o.subobjects[std::size_t(mp.subobject)];
+  if (!s.model.empty()) return point_text(p);
+  return "vertex " + std::to_string(s.polygons[std::size_t(mp.polygon)].indices[corner]) + " " + point_text(p);
+}
+
+// How far the polygon's vertices rise above the plane f (0 when none does).
+double rise_above(const Mesh& m, const MeshPolygon& mp, const PolyhedronFace& f) {
+  double worst = 0;
+  for (auto i : mp.ids) worst = std::max(worst, glm::dot(f.normal, m.points[i]) - f.offset);
+  return worst;
+}
+
+// Convex. First edge by edge: two polygons on different face planes meeting at an edge must fold
+// outward, each lying on the inner side of the other's plane (within tol); the first edge that
+// turns inward is named, with its two polygons and its ends. "First" is deterministic: the object's
+// polygons in order (subobjects in order, then polygon index within a subobject), and within a
+// polygon its edges in the order its corners are listed in the input (corner i to corner i + 1, the
+// last to the first; as listed even when the mesh was reversed at load). The test is symmetric, so
+// the first edge's polygon is the lowest-indexed polygon that has a reflex edge.
+// Then globally: every vertex on the inner side of every face plane (or within tol outside it),
+// which catches what no single edge shows (pieces apart, a surface wound around twice).
 PolyhedronIssue check_convex(const Mesh& m, double tol, const Object& o) {
+  auto face_of = [&](const MeshPolygon& mp) {
+    return std::size_t(o.hull.face_of[std::size_t(mp.subobject)][std::size_t(mp.polygon)]);
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> edge;  // directed edge -> polygon (closed)
+  for (std::size_t k = 0; k < m.polygons.size(); ++k) {
+    const auto& ids = m.polygons[k].ids;
+    for (std::size_t i = 0; i < ids.size(); ++i) edge.emplace(std::make_pair(ids[i], ids[(i + 1) % ids.size()]), k);
+  }
+  for (std::size_t k = 0; k < m.polygons.size(); ++k) {
+    const MeshPolygon& a = m.polygons[k];
+    const std::size_t n = a.ids.size();
+    for (std::size_t e = 0; e < n; ++e) {
+      // Corners of edge e as listed in the input (mp.ids is reversed when the mesh was).
+      const std::size_t c0 = o.hull.reoriented ? n - 1 - e : e;
+      const std::size_t c1 = o.hull.reoriented ? (2 * n - 2 - e) % n : (e + 1) % n;
+      const std::uint32_t p0 = a.ids[c0], p1 = a.ids[c1];
+      // The neighbour holds the edge in the other direction (check_closed made sure it exists).
+      const auto it = o.hull.reoriented ? edge.find({p0, p1}) : edge.find({p1, p0});
+      if (it == edge.end()) continue;
+      const MeshPolygon& b = m.polygons[it->second];
+      const std::size_t fa = face_of(a), fb = face_of(b);
+      if (fa == fb) continue;  // coplanar polygons of one face: a flat edge
+      const PolyhedronFace &pa = o.hull.faces[fa], &pb = o.hull.faces[fb];
+      const double rise_b = rise_above(m, b, pa), rise_a = rise_above(m, a, pb);
+      if (std::max(rise_a, rise_b) <= tol) continue;
+      // The interior dihedral angle of an inward fold: 180 degrees plus the angle between the normals.
+      const double turn = std::atan2(glm::length(glm::cross(pa.normal, pb.normal)), glm::dot(pa.normal, pb.normal));
+      std::ostringstream angle;
+      angle.setf(std::ios::fixed);
+      angle.precision(1);
+      angle << 180 + turn * 180 / 3.14159265358979323846;
+      const bool b_rises = rise_b >= rise_a;
+      return {"polyhedron is not convex: the edge from " + vertex_text(o, a, c0, m.points[p0]) + " to " +
+                  vertex_text(o, a, c1, m.points[p1]) + " between " + polygon_pair_text(o, a, b) +
+                  " turns inward (interior dihedral angle " + angle.str() +
+                  " degrees, more than 180: " + polygon_text(o, b_rises ? b : a) + " rises " +
+                  std::to_string(b_rises ? rise_b : rise_a) + " m above the plane of " +
+                  polygon_text(o, b_rises ? a : b) + ", tolerance " + tolerance_text(tol) + ")",
+              a.subobject, a.polygon};
+    }
+  }
   for (std::size_t k = 0; k < m.polygons.size(); ++k) {
     const MeshPolygon& mp = m.polygons[k];
-    const PolyhedronFace& f =
-        o.hull.faces[std::size_t(o.hull.face_of[std::size_t(mp.subobject)][std::size_t(mp.polygon)])];
+    const PolyhedronFace& f = o.hull.faces[face_of(mp)];
     for (const auto& p : m.points) {
       const double out = glm::dot(f.normal, p) - f.offset;
       if (out > tol)
-        return {"polyhedron is not convex: the vertex " + point_text(p) + " lies " + std::to_string(out) +
-                    " m outside the plane of this face (tolerance " + tolerance_text(tol) + ")",
+        return {"polyhedron is not convex: no edge turns inward, but the vertex " + point_text(p) + " lies " +
+                    std::to_string(out) + " m outside the plane of this face (tolerance " + tolerance_text(tol) +
+                    "): its polygons do not bound one convex solid (separate pieces, or a surface that winds "
+                    "around more than once)",
                 mp.subobject, mp.polygon};
     }
   }

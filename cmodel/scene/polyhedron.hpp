@@ -25,8 +25,11 @@ struct PolyhedronIssue {
 
 // Checks that the object's polygons (every subobject's, vertices welded by exact position) bound a
 // closed convex polyhedron: every edge shared by exactly two polygons in opposite directions, every
-// face planar, every vertex inside every face plane (within the tolerance). Polygons wound inward
-// as a whole are reversed (o.hull.reoriented). Fills o.hull; returns an empty rule when valid.
+// face planar, every edge folding outward and every vertex inside every face plane (within the
+// tolerance). A solid that is not convex is reported at the first edge that turns inward (in polygon
+// order, then edge order; polyhedron.cpp), naming its two polygons (a model's by mesh and face) and
+// its two vertices. Polygons wound inward as a whole are reversed (o.hull.reoriented). Fills o.hull;
+// returns an empty rule when valid.
 PolyhedronIssue build_polyhedron(Object& o);
 
 }  // namespace cig

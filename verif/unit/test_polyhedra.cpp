@@ -106,8 +106,8 @@ TEST(PolyhedronLoader, ReversesAMeshWoundInward) {
 }
 
 TEST(PolyhedronLoader, RejectsOpenNonConvexAndWarpedSolids) {
-  for (const char* name :
-       {"polyhedron_not_closed", "polyhedron_obj_not_closed", "polyhedron_not_convex", "polyhedron_nonplanar"}) {
+  for (const char* name : {"polyhedron_not_closed", "polyhedron_obj_not_closed", "polyhedron_not_convex",
+                           "polyhedron_obj_not_convex", "polyhedron_nonplanar"}) {
     SCOPED_TRACE(name);
     try {
       load_scene(test::source_path(std::string("verif/bad_input/") + name + ".json"));
@@ -120,6 +120,83 @@ TEST(PolyhedronLoader, RejectsOpenNonConvexAndWarpedSolids) {
   const Scene s = parse_scene(text, "open_box.json");
   EXPECT_FALSE(s.objects[0].polyhedron);
   EXPECT_TRUE(s.objects[0].hull.faces.empty());
+}
+
+// The rule of the InputError loading `text` (as `file`) throws, prefixed by its JSON place.
+std::string load_error(const std::string& text, const std::string& file) {
+  try {
+    parse_scene(text, file);
+  } catch (const InputError& e) { return e.where() + ": " + e.rule(); }
+  return "accepted";
+}
+
+// Not convex: the first edge that turns inward is named, with its polygons and vertices (polygon
+// order, then the order of the polygon's corners as listed), wherever the mesh's winding and
+// subobjects put them; a model's by mesh and face.
+TEST(PolyhedronLoader, NamesTheFirstEdgeThatTurnsInward) {
+  const std::string file = test::source_path("verif/bad_input/polyhedron_not_convex.json");
+  const nlohmann::json valley = nlohmann::json::parse(test::read_file(file));
+  // The valley roof: polygons 2 and 3 are its two halves, meeting in the valley (x = 0, z = 7).
+  const std::string edge =
+      "the edge from vertex 8 (0, 5, 7) to vertex 3 (0, -5, 7) between polygons 2 and 3 turns "
+      "inward (interior dihedral angle 241.9 degrees, more than 180: polygon 3 rises 5.144958 m "
+      "above the plane of polygon 2, tolerance ";
+  EXPECT_NE(load_error(valley.dump(), file)
+                .find("objects[0].subobjects[0].polygons[2]: object 'valley_roof': "
+                      "polyhedron is not convex: " +
+                      edge),
+            std::string::npos)
+      << load_error(valley.dump(), file);
+
+  // Wound inward as a whole (reversed at load): the same polygons, the edge as the input lists it.
+  nlohmann::json inward = valley;
+  for (auto& p : inward["objects"][0]["subobjects"][0]["polygons"]) {
+    std::vector<int> ids = p["indices"];
+    std::reverse(ids.begin(), ids.end());
+    p["indices"] = ids;
+  }
+  EXPECT_NE(load_error(inward.dump(), file)
+                .find("polygons[2]: object 'valley_roof': polyhedron is not convex: the edge from vertex 3 (0, -5, 7) "
+                      "to vertex 8 (0, 5, 7) between polygons 2 and 3 turns inward"),
+            std::string::npos)
+      << load_error(inward.dump(), file);
+
+  // Polygon 3 moved to a subobject of its own: each polygon named with its subobject; the vertex
+  // indices are those of the first polygon's subobject.
+  nlohmann::json split = valley;
+  nlohmann::json& sub = split["objects"][0]["subobjects"];
+  nlohmann::json second = sub[0];
+  second["polygons"] = nlohmann::json::array({sub[0]["polygons"][3]});
+  sub[0]["polygons"].erase(3);
+  sub.push_back(second);
+  EXPECT_NE(load_error(split.dump(), file)
+                .find("objects[0].subobjects[0].polygons[2]: object 'valley_roof': polyhedron is not convex: the edge "
+                      "from vertex 8 (0, 5, 7) to vertex 3 (0, -5, 7) between polygon 2 of subobject 0 and polygon 0 "
+                      "of subobject 1 turns inward"),
+            std::string::npos)
+      << load_error(split.dump(), file);
+
+  // A model: its faces by mesh and face in the file, the edge's ends by position (object coordinates).
+  const std::string obj = test::source_path("verif/bad_input/polyhedron_obj_not_convex.json");
+  EXPECT_NE(load_error(test::read_file(obj), obj)
+                .find("objects[0].subobjects[0].obj: model 'models/l_prism.obj' mesh 'defaultobject' face 6: object "
+                      "'l_prism': polyhedron is not convex: the edge from (10, 10, 0) to (10, 10, 10) between mesh "
+                      "'defaultobject' face 6 and mesh 'defaultobject' face 7 turns inward (interior dihedral angle "
+                      "270.0 degrees"),
+            std::string::npos)
+      << load_error(test::read_file(obj), obj);
+}
+
+// Every edge folds outward, but two tetrahedra apart are not one convex solid: the vertex test says so.
+TEST(PolyhedronLoader, RejectsPiecesApartThatNoEdgeShows) {
+  const std::string tet = R"({"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+      "polygons": [{"indices": [2, 1, 0]}, {"indices": [1, 3, 0]}, {"indices": [3, 2, 0]}, {"indices": [2, 3, 1]}]})";
+  std::string apart = tet;
+  apart.replace(apart.find("[[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]"), 44,
+                "[[5, 0, 0], [6, 0, 0], [5, 1, 0], [5, 0, 1]]");
+  EXPECT_EQ(load_error(one_object_scene(tet), "tet.json"), "accepted");
+  const std::string e = load_error(one_object_scene(tet + ", " + apart), "two.json");
+  EXPECT_NE(e.find("polyhedron is not convex: no edge turns inward, but the vertex"), std::string::npos) << e;
 }
 
 // Stage B's planes against its own polygons, frames 0 (100 km) and 9 (1 km) of the shipped scene.
