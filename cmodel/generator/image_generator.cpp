@@ -62,7 +62,7 @@ nlohmann::ordered_json geometry_report(const GeometryStats& gs) {
            {{"subobjects", gs.bsp_subobjects},
             {"nodes_visited", gs.bsp.nodes},
             {"partition_tests", gs.bsp.partitions},
-            {"operations", {{"L", gs.bsp.L}, {"C", gs.bsp.C}, {"A", gs.bsp.A}, {"M", gs.bsp.M}}}}},
+            {"operations", {{"L", gs.bsp.ops.L}, {"C", gs.bsp.ops.C}, {"A", gs.bsp.ops.A}, {"M", gs.bsp.ops.M}}}}},
           {"ms", gs.ms}};
 }
 

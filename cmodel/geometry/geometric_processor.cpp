@@ -29,21 +29,21 @@ PriorityWalkCost walk_priority_tree(const std::vector<BspNode>& tree, const Worl
   PriorityWalkCost cost;
   auto push = [&](std::int32_t k, bool emit) {
     stack.push_back({k, emit});
-    cost.L += 2;  // pushed and, later, popped
+    cost.ops.L += 2;  // pushed and, later, popped
   };
-  cost.L += 2;
+  cost.ops.L += 2;
   while (!stack.empty()) {
     const auto [k, emit] = stack.back();
     stack.pop_back();
     const BspNode& node = tree[std::size_t(k)];
     if (emit) {
       for (std::uint32_t p = node.first; p < node.first + node.count; ++p) order.push_back(p);
-      cost.L += node.count;
+      cost.ops.L += node.count;
       continue;
     }
     ++cost.nodes;
-    cost.L += 5;
-    ++cost.C;
+    cost.ops.L += 5;
+    ++cost.ops.C;
     if (node.next >= 0) push(node.next, false);  // the rest of the chain comes after
     if (node.front < 0 && node.back < 0) {       // a run: no plane to test
       push(k, true);
@@ -51,9 +51,9 @@ PriorityWalkCost walk_priority_tree(const std::vector<BspNode>& tree, const Worl
     }
     // The eye's side of the node's plane (that of its first polygon): nearer side first.
     ++cost.partitions;
-    cost.L += 4;
-    cost.M += 3;
-    cost.A += 2;
+    cost.ops.L += 4;
+    cost.ops.M += 3;
+    cost.ops.A += 2;
     const bool eye_in_front = glm::dot(w.face_normal[node.first], eye) > w.face_offset[node.first];
     const std::int32_t near_side = eye_in_front ? node.front : node.back;
     const std::int32_t far_side = eye_in_front ? node.back : node.front;

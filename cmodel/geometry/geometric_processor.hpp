@@ -6,26 +6,25 @@
 
 #include <cstdint>
 
+#include "common/operation_units.hpp"
 #include "frame/screen_frame.hpp"
 #include "manager/scene_manager.hpp"
 
 namespace cig {
 
-// The cost of walking priority trees in the units of seed 000's operation table (SPEC A.7,
-// studies/operation_counts.hpp): L memory reads and writes, C comparisons with a conditional jump,
+// The cost of walking priority trees in the units of seed 000's operation table
+// (common/operation_units.hpp): L memory reads and writes, C comparisons with a conditional jump,
 // A additions, M multiplications. Per node: its record read (first, count, front, back, next: 5 L)
 // and its stack entry pushed and popped (2 L); a partition node's side test n.eye against the
 // offset reads the plane (4 L) and is 3 M, 2 A and 1 C; a run's "no children" test is 1 C; every
 // polygon put on the list is 1 L.
 struct PriorityWalkCost {
-  std::uint64_t nodes = 0, partitions = 0, L = 0, C = 0, A = 0, M = 0;
+  std::uint64_t nodes = 0, partitions = 0;
+  OperationCounts ops;
   void add(const PriorityWalkCost& o) {
     nodes += o.nodes;
     partitions += o.partitions;
-    L += o.L;
-    C += o.C;
-    A += o.A;
-    M += o.M;
+    ops += o.ops;
   }
 };
 

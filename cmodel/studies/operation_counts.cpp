@@ -21,27 +21,6 @@
 
 namespace cig {
 
-OperationCounts& OperationCounts::operator+=(const OperationCounts& o) {
-  R += o.R;
-  C += o.C;
-  O += o.O;
-  L += o.L;
-  A += o.A;
-  M += o.M;
-  D += o.D;
-  return *this;
-}
-
-bool operator==(const OperationCounts& a, const OperationCounts& b) {
-  return a.R == b.R && a.C == b.C && a.O == b.O && a.L == b.L && a.A == b.A && a.M == b.M && a.D == b.D;
-}
-
-std::string to_string(const OperationCounts& c) {
-  std::ostringstream s;
-  s << "R=" << c.R << " C=" << c.C << " O=" << c.O << " L=" << c.L << " A=" << c.A << " M=" << c.M << " D=" << c.D;
-  return s.str();
-}
-
 double cycles(const OperationCounts& c, const OperationCost& k) {
   return double(c.R) * k.R + double(c.C) * k.C + double(c.O) * k.O + double(c.L) * k.L + double(c.A) * k.A +
          double(c.M) * k.M + double(c.D) * k.D;

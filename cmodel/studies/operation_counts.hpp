@@ -73,16 +73,9 @@
 
 #include <glm/vec3.hpp>
 
-namespace cig {
+#include "common/operation_units.hpp"
 
-struct OperationCounts {
-  std::uint64_t R = 0, C = 0, O = 0, L = 0, A = 0, M = 0, D = 0;
-  OperationCounts& operator+=(const OperationCounts& o);
-  std::uint64_t total() const { return R + C + O + L + A + M + D; }
-};
-bool operator==(const OperationCounts& a, const OperationCounts& b);
-inline bool operator!=(const OperationCounts& a, const OperationCounts& b) { return !(a == b); }
-std::string to_string(const OperationCounts& c);  // "R=.. C=.. O=.. L=.. A=.. M=.. D=.."
+namespace cig {
 
 // The table's formulas as printed can be negative (the subobject sorter at Noc = 0).
 struct SignedCounts {

@@ -156,10 +156,10 @@ std::vector<std::uint32_t> walk(const Scene& scene, const WorldDatabase& db, con
     for (std::uint32_t k = 0; k < sorted.size(); ++k) EXPECT_EQ(sorted[k], k);
     EXPECT_EQ(sorted.size(), s.polygons.size());
     EXPECT_EQ(cost.nodes, s.bsp.size());
-    EXPECT_EQ(cost.L, 9 * cost.nodes + 4 * cost.partitions + order.size());
-    EXPECT_EQ(cost.C, cost.nodes);
-    EXPECT_EQ(cost.M, 3 * cost.partitions);
-    EXPECT_EQ(cost.A, 2 * cost.partitions);
+    EXPECT_EQ(cost.ops.L, 9 * cost.nodes + 4 * cost.partitions + order.size());
+    EXPECT_EQ(cost.ops.C, cost.nodes);
+    EXPECT_EQ(cost.ops.M, 3 * cost.partitions);
+    EXPECT_EQ(cost.ops.A, 2 * cost.partitions);
     // Farthest first is the same order reversed.
     std::vector<std::uint32_t> back;
     walk_priority_tree(s.bsp, db.objects[0].subobjects[0], eye, true, back);
