@@ -15,6 +15,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// A sanitizer's (or libFuzzer's) death callback: present only in sanitized builds (weak).
+extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
+
 namespace cig {
 
 namespace {
@@ -56,10 +59,14 @@ bool write_all(int fd, const char* p, std::size_t n) {
 }
 
 // The child: default signal dispositions (a crash ends it instead of running the parent's
-// handlers, libFuzzer's among them), the limits, the work, and a status byte before the result.
+// handlers, libFuzzer's among them), no death callback, the limits, the work, and a status byte
+// before the result.
 [[noreturn]] void child(int fd, const std::function<std::string()>& work, const IsolationLimits& limits,
                         unsigned long long address_limit) {
   for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGALRM, SIGTERM, SIGPIPE}) std::signal(sig, SIG_DFL);
+  // Under libFuzzer a sanitizer report in the child would run the fuzzer's death callback there,
+  // which writes the input as a crash of the fuzz target; the parent reports the child's end instead.
+  if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
   const rlim_t cpu = rlim_t(limits.seconds) + 1;
   const rlimit cpu_limit{cpu, cpu};
   setrlimit(RLIMIT_CPU, &cpu_limit);
