@@ -15,7 +15,7 @@ test_packages=(
   clang-format                    # the layout check (.clang-format)
   libgtest-dev libbenchmark-dev   # GoogleTest, Google Benchmark
   libsystemc-dev                  # SystemC sc_int/sc_uint: the second type-layer configuration
-  assimp-testmodels               # real OBJ models for the loader tests
+  assimp-testmodels               # real models of many formats: the loader tests, scenes/models.json
   verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
   gtkwave                         # fst2vcd: the co-simulation's trace test reads its FST (cosim.trace)
   gnuplot-nox                     # `cig sweep --plot`: the run-time / error frontier as a PNG
