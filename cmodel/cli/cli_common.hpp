@@ -75,7 +75,10 @@ struct ManagerUnitArgs {
                     "stage A's visibility test: kernel (hls/manager, bit-accurate, default) or double (its twin)")
         ->check(CLI::IsMember({"kernel", "double"}));
   }
-  VisibilityArith arith() const { return unit == "double" ? VisibilityArith::kDouble : VisibilityArith::kKernel; }
+  VisibilityArith arith() const {
+    return unit == visibility_arith_name(VisibilityArith::kDouble) ? VisibilityArith::kDouble
+                                                                   : VisibilityArith::kKernel;
+  }
 };
 
 // The processors that have an architecture model and RTL (`cig arch`, `cig cosim` --processor):

@@ -56,14 +56,14 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
       if (channel < 0 || c == channel) j.jobs_.push_back({f, c});
   j.frames_ = b - a + 1;
   j.channels_ = channel < 0 ? int(j.scene_->channels.size()) : 1;
-  j.pipeline_ = std::make_unique<ImageGenerator>(*j.scene_, CullSettings{}, visibility);
+  j.generator_ = std::make_unique<ImageGenerator>(*j.scene_, CullSettings{}, visibility);
   return j;
 }
 
 ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
-  if (!pipeline_) return list_[0];
+  if (!generator_) return list_[0];
   nlohmann::ordered_json unused;
-  return pipeline_->geometry(jobs_[k].first, jobs_[k].second, unused);
+  return generator_->geometry(jobs_[k].first, jobs_[k].second, unused);
 }
 
 void FrameJobs::check_capacity(const RasterEngine& engine) const {

@@ -55,7 +55,7 @@ class FrameJobs {
   std::string input_;              // the file, for errors
   std::vector<ScreenFrame> list_;  // polygon-list input
   std::unique_ptr<Scene> scene_;
-  std::unique_ptr<ImageGenerator> pipeline_;
+  std::unique_ptr<ImageGenerator> generator_;
   std::vector<std::pair<int, int>> jobs_;  // (frame, channel)
   int frames_ = 1, channels_ = 1;
 };

@@ -33,9 +33,9 @@ int PolysCommand::run() {
   plan.scene_inputs(scene);
   plan.file(out_file, "--out");
   plan.check();
-  const ImageGenerator pipeline(scene, {}, manager_unit.arith());
+  const ImageGenerator generator(scene, {}, manager_unit.arith());
   nlohmann::ordered_json rep;
-  const ScreenFrame f = pipeline.geometry(frame, channel, rep);
+  const ScreenFrame f = generator.geometry(frame, channel, rep);
   write_text_file(out_file, polygon_list_json(f));
   std::cout << "cig: wrote " << f.polygons.size() << " polygon(s), " << f.light_points.size() << " light point(s) to "
             << out_file << "\n";

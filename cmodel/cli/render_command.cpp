@@ -111,16 +111,15 @@ std::string write_panorama(const Scene& scene, const std::string& out_dir, int f
 
 // Every frame and channel against the engine's capacities before the first image is written
 // (stages A and B only, and only when the scene could exceed them).
-void check_frames(const Scene& scene, int a, int b, const std::vector<int>& channels, const std::string& engine,
-                  const EngineOptions& eo, VisibilityArith visibility) {
+void check_frames(const Scene& scene, int a, int b, const std::vector<int>& channels, const RasterEngine& checker,
+                  VisibilityArith visibility) {
   if (!scene_exceeds_ids(scene)) return;
-  const auto checker = make_engine(engine, eo);
-  const ImageGenerator pipeline(scene, {}, visibility);
+  const ImageGenerator generator(scene, {}, visibility);
   for (int frame = a; frame <= b; ++frame)
     for (int c : channels) {
       nlohmann::ordered_json unused;
       try {
-        checker->check_frame(pipeline.geometry(frame, c, unused));
+        checker.check_frame(generator.geometry(frame, c, unused));
       } catch (const InputError& e) {
         throw InputError(scene.file, e.where(), e.rule());  // the scene that makes the frame
       }
@@ -230,17 +229,17 @@ int RenderCommand::run() {
   plan.folder(out_dir, "--out", names);
   plan.file(report_file, "--report");
   plan.check();
-  check_frames(scene, a, b, channels, engine.engine, eo, manager_unit.arith());
+  check_frames(scene, a, b, channels, *probe, manager_unit.arith());
   std::filesystem::create_directories(out_dir);
 
   // Phase 2: the frames.
-  const ImageGenerator pipeline(scene, {}, manager_unit.arith());
+  const ImageGenerator generator(scene, {}, manager_unit.arith());
   nlohmann::ordered_json report = render_report(*this, scene, eo, load_ms);
   const auto t_all = Clock::now();
   Progress progress("cig render", b - a + 1);
   for (int frame = a; frame <= b; ++frame) {
     const auto t_frame = Clock::now();
-    std::vector<ChannelOutput> outs = pipeline.render(frame, channels, engine.engine, eo, threads, pipelines);
+    std::vector<ChannelOutput> outs = generator.render(frame, channels, engine.engine, eo, threads, pipelines);
     const double render_ms = ms_since(t_frame);
     const auto t_out = Clock::now();
     write_channel_images(scene, out_dir, frame, write_ids_files, outs);

@@ -10,14 +10,7 @@ namespace cig {
 
 namespace {
 
-// Raw ranges of the formats (hls/manager/records.hpp); u = 2^-11 m.
-constexpr double kU = 1.0 / 2048;
-constexpr std::int64_t kWorldMin = -(std::int64_t{1} << 31), kWorldMax = (std::int64_t{1} << 31) - 1;
-constexpr std::int64_t kRadiusMax = (std::int64_t{1} << 32) - 1;
-constexpr std::int64_t kRotMin = -(std::int64_t{1} << 17), kRotMax = (std::int64_t{1} << 17) - 1;
-constexpr double kOne = 65536;  // 1.0 in B and t
-constexpr std::int64_t kTanMax = (std::int64_t{1} << 18) - 1;
-constexpr std::int64_t kNearMax = (std::int64_t{1} << 24) - 1;
+using namespace manager_raw;
 
 // v (already rounded to an integer) clamped to [lo, hi]; `fits` cleared when it was not in range.
 std::int64_t clamp_raw(double v, std::int64_t lo, std::int64_t hi, bool& fits) {
@@ -40,10 +33,10 @@ HostManagerChannel host_manager_channel(const ChannelView& v) {
     // glm is column-major: row i (eye axis) of B, column j (world axis) is world_to_eye[j][i].
     for (int j = 0; j < 3; ++j)
       h.channel.b[i][j] = hls::RotationEntry::from_raw_value(
-          clamp_raw(std::nearbyint(v.world_to_eye[j][i] * kOne), kRotMin, kRotMax, h.fits));
+          clamp_raw(std::nearbyint(v.world_to_eye[j][i] * double(kOne)), kRotMin, kRotMax, h.fits));
   }
-  h.channel.tan_half_fov =
-      hls::TanHalfFov::from_raw_value(std::uint64_t(clamp_raw(std::ceil(v.tan_half_fov * kOne), 0, kTanMax, h.fits)));
+  h.channel.tan_half_fov = hls::TanHalfFov::from_raw_value(
+      std::uint64_t(clamp_raw(std::ceil(v.tan_half_fov * double(kOne)), 0, kTanMax, h.fits)));
   h.channel.near =
       hls::NearDistance::from_raw_value(std::uint64_t(clamp_raw(std::floor(v.near / kU), 0, kNearMax, h.fits)));
   return h;
@@ -57,7 +50,13 @@ HostManagerObject host_manager_object(const glm::dvec3& centre, double radius) {
   return h;
 }
 
-VisibilityUnit::VisibilityUnit(const ChannelView& view, VisibilityArith arith) : arith_(arith), view_(view) {
+VisibilityUnit::VisibilityUnit(const ChannelView& view, VisibilityArith arith)
+    : arith_(arith), tan_half_fov_(view.tan_half_fov), near_(view.near) {
+  for (int i = 0; i < 3; ++i) {
+    eye_[i] = view.eye[i];
+    // glm is column-major: row i (eye axis) of B, column j (world axis) is world_to_eye[j][i].
+    for (int j = 0; j < 3; ++j) b_[i][j] = view.world_to_eye[j][i];
+  }
   const HostManagerChannel h = host_manager_channel(view);
   channel_fits_ = h.fits;
   hls::manager_channel_setup_top(h.channel, setup_);
@@ -66,12 +65,8 @@ VisibilityUnit::VisibilityUnit(const ChannelView& view, VisibilityArith arith) :
 bool VisibilityUnit::visible(const glm::dvec3& centre, double radius, VisibilityUnitStats& stats) const {
   ++stats.spheres;
   if (arith_ == VisibilityArith::kDouble) {
-    double eye[3], b[3][3], c[3];
-    for (int i = 0; i < 3; ++i) {
-      eye[i] = view_.eye[i], c[i] = centre[i];
-      for (int j = 0; j < 3; ++j) b[i][j] = view_.world_to_eye[j][i];
-    }
-    return manager_visibility_twin(eye, b, view_.tan_half_fov, view_.near, c, radius).visible;
+    const double c[3] = {centre.x, centre.y, centre.z};
+    return manager_visibility_twin(eye_, b_, tan_half_fov_, near_, c, radius).visible;
   }
   const HostManagerObject h = host_manager_object(centre, radius);
   if (!channel_fits_ || !h.fits) {

@@ -21,6 +21,17 @@
 
 namespace cig {
 
+// Raw ends of the kernel's formats (hls/manager/records.hpp); u = 2^-11 m, the world's LSB.
+namespace manager_raw {
+constexpr double kU = 1.0 / 2048;
+constexpr std::int64_t kWorldMin = -(std::int64_t{1} << 31), kWorldMax = (std::int64_t{1} << 31) - 1;
+constexpr std::int64_t kRadiusMax = (std::int64_t{1} << 32) - 1;
+constexpr std::int64_t kRotMin = -(std::int64_t{1} << 17), kRotMax = (std::int64_t{1} << 17) - 1;
+constexpr std::int64_t kOne = std::int64_t{1} << 16;  // 1.0 in B and t
+constexpr std::int64_t kTanMax = (std::int64_t{1} << 18) - 1;
+constexpr std::int64_t kNearMax = (std::int64_t{1} << 24) - 1;
+}  // namespace manager_raw
+
 enum class VisibilityArith {
   kKernel,  // hls/manager's bit-accurate kernel (the default)
   kDouble,  // its double twin, unquantized
@@ -53,7 +64,8 @@ class VisibilityUnit {
 
  private:
   VisibilityArith arith_;
-  ChannelView view_;
+  // The twin's channel, in its row-major form (set once, not per sphere).
+  double eye_[3], b_[3][3], tan_half_fov_, near_;
   hls::ManagerChannelSetup setup_;
   bool channel_fits_ = true;
 };

@@ -230,17 +230,17 @@ template <class P>
 class QuadEngine : public RasterEngine {
  public:
   QuadEngine(const QuadOptions& o, const char* name, const char* format)
-      : name_(name), format_(format), options_(o), pipeline_(o, name, format) {}
+      : name_(name), format_(format), options_(o), processor_(o, name, format) {}
   const char* name() const override { return name_; }
-  void check_engine_raster(int raster) const override { pipeline_.check_raster(raster); }
+  void check_engine_raster(int raster) const override { processor_.check_raster(raster); }
 
  protected:
-  EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame); }
-  void check_split_frame(const ScreenFrame& frame) const override { pipeline_.check_frame(frame); }
+  EngineRun render_frame(const ScreenFrame& frame) override { return processor_.render(frame); }
+  void check_split_frame(const ScreenFrame& frame) const override { processor_.check_frame(frame); }
 
   // Each part on its own pipeline and worker thread, then the merge of their samples.
   EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts) override {
-    for (const ScreenFrame* part : parts) pipeline_.check_frame(*part);
+    for (const ScreenFrame* part : parts) processor_.check_frame(*part);
     EngineRun run;
     run.report = {{"engine", name_},
                   {"format", format_},
@@ -261,7 +261,7 @@ class QuadEngine : public RasterEngine {
   const char* name_;
   const char* format_;
   QuadOptions options_;
-  QuadProcessor<P> pipeline_;
+  QuadProcessor<P> processor_;
   std::vector<std::unique_ptr<QuadProcessor<P>>> parts_;  // --pipelines: one per part
 };
 

@@ -33,7 +33,7 @@ constexpr double kSegmentWriteNs = 400.0;
 constexpr double kSegmentReadNs = 200.0;
 
 // ---- The fixed/double twin adaptation -------------------------------------------------------------
-// Front<P>: what differs between the bit-accurate pipeline (the formatter kernel, the coding table,
+// Front<P>: what differs between the bit-accurate processor (the formatter kernel, the coding table,
 // the fog table) and its double twin (the formatter twin, exact chords, the fog formula). The
 // quadtree engine adapts its twin the same way (QuadFront<P>, quadtree_frame.hpp).
 
@@ -127,7 +127,7 @@ struct Front<DoubleSegmentArith> {
   static bool split(const hls::FormattedPrimitiveT<P>&, int, int, hls::SpanPieces&) { return false; }
 };
 
-// ---- The pipeline ----------------------------------------------------------------------------------
+// ---- The processor ---------------------------------------------------------------------------------
 
 template <class P>
 class SegmentProcessor {
@@ -477,8 +477,8 @@ class SegmentEngine : public RasterEngine {
         side_log2_(side_log2),
         quad_(quad),
         interp_(seed_interp),
-        pipeline_(quad, seed_interp, side_log2) {
-    pipeline_.set_threads(threads);
+        processor_(quad, seed_interp, side_log2) {
+    processor_.set_threads(threads);
   }
   const char* name() const override { return name_; }
   const std::vector<DropKind>& drop_kinds() const override { return segment_drop_kinds(); }
@@ -489,7 +489,7 @@ class SegmentEngine : public RasterEngine {
   }
 
  protected:
-  EngineRun render_frame(const ScreenFrame& frame) override { return pipeline_.render(frame, name_, format_); }
+  EngineRun render_frame(const ScreenFrame& frame) override { return processor_.render(frame, name_, format_); }
 
   // Each part on its own pipeline and worker thread, then the merged video stage.
   EngineRun render_split_parts(const std::vector<const ScreenFrame*>& parts) override {
@@ -521,7 +521,7 @@ class SegmentEngine : public RasterEngine {
   const char* format_;
   int side_log2_;
   bool quad_, interp_;
-  SegmentProcessor<P> pipeline_;
+  SegmentProcessor<P> processor_;
   std::vector<std::unique_ptr<SegmentProcessor<P>>> parts_;  // --pipelines: one per part
 };
 

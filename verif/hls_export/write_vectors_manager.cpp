@@ -30,14 +30,7 @@ namespace {
 
 // The host's conversions (cmodel/manager/visibility_unit.hpp, the data path's): positions and B to
 // nearest, radius and t up, near down, clamped to the formats (the corners below reach the ends).
-constexpr double kU = 1.0 / 2048;  // u = 2^-11 m
-// Raw ends of the formats (hls/manager/records.hpp), for the hand-made corners.
-constexpr std::int64_t kWorldMin = -(std::int64_t{1} << 31), kWorldMax = (std::int64_t{1} << 31) - 1;
-constexpr std::int64_t kRadiusMax = (std::int64_t{1} << 32) - 1;
-constexpr std::int64_t kRotMin = -(std::int64_t{1} << 17), kRotMax = (std::int64_t{1} << 17) - 1;
-constexpr std::int64_t kOne = std::int64_t{1} << 16;  // 1.0 in B and t
-constexpr std::int64_t kTanMax = (std::int64_t{1} << 18) - 1;
-constexpr std::int64_t kNearMax = (std::int64_t{1} << 24) - 1;
+using namespace manager_raw;  // the formats' raw ends, for the hand-made corners
 hls::ManagerChannel channel_of(const ChannelView& v) { return host_manager_channel(v).channel; }
 hls::ManagerObject sphere(const glm::dvec3& centre, double r) { return host_manager_object(centre, r).object; }
 

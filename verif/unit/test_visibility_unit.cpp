@@ -13,14 +13,13 @@
 
 #include "generator/image_generator.hpp"
 #include "manager/scene_manager.hpp"
-#include "manager/visibility_twin.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_support.hpp"
 
 namespace cig {
 namespace {
 
-constexpr double kU = 1.0 / 2048;  // the world's LSB (hls/manager/records.hpp)
+using manager_raw::kU;  // the world's LSB
 
 // How far beyond the true pyramid a sphere the kernel keeps can lie, in metres (a radius the twin
 // must then keep). hls/manager/visibility.hpp bounds it, on the kernel's quantized inputs, by
@@ -37,12 +36,8 @@ double kernel_margin(const ChannelView& v, const glm::dvec3& centre, double r) {
 }
 
 bool twin_keeps(const ChannelView& v, const glm::dvec3& centre, double r) {
-  double eye[3], b[3][3], c[3];
-  for (int i = 0; i < 3; ++i) {
-    eye[i] = v.eye[i], c[i] = centre[i];
-    for (int j = 0; j < 3; ++j) b[i][j] = v.world_to_eye[j][i];
-  }
-  return manager_visibility_twin(eye, b, v.tan_half_fov, v.near, c, r).visible;
+  VisibilityUnitStats unused;
+  return VisibilityUnit(v, VisibilityArith::kDouble).visible(centre, r, unused);
 }
 
 WorldDatabase random_world(std::mt19937_64& rng, int count, double extent) {
