@@ -2,9 +2,12 @@
 // (priority), so a subobject's polygon list must be an order in which no polygon can hide one
 // listed before it, from every eye position. A modeller's list is such an order for convex parts
 // and for hand-ordered decals (runway markings before the runway); a general mesh (any model
-// read through assimp) is not. Such subobjects are compiled at scene load into a binary space
-// partitioning tree (Subobject::bsp), splitting polygons that straddle a partition plane; stage B
-// walks the tree per view (geometry/priority_walk.hpp), which gives a visibility order.
+// read through assimp) is not. Such subobjects are compiled at scene load into a tree
+// (Subobject::bsp): the strongly connected components of "may hide" in a visibility order, and for
+// each cycle a binary space partition by one of its polygons' planes, splitting the polygons that
+// straddle it. Stage B walks the tree per view (walk_priority_tree, geometry/geometric_processor.hpp),
+// which gives a visibility order. Objects that interpenetrate a model are merged into one object
+// with one tree (an occlusion group of seed 000 whose parts no order by distance can draw).
 //
 // Which subobjects: a model's ("priority_order": "tree", the default for "model") when its order
 // is not valid; an inline list ("modeller", its default) is kept and, when not valid, counted.
