@@ -152,26 +152,30 @@ struct ChannelGeometry {
       code[i] = pyramid.outcode(eye[i]);
     }
     stats.polygons_in += sub.polygons.size();
+    if (sub.bsp.empty()) {  // the modeller's list as it is
+      for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) emit(sub, w, object_index, si, pi);
+      return;
+    }
     order.clear();
-    if (sub.bsp.empty()) {
-      for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) order.push_back(pi);
-    } else {
-      ++stats.bsp_subobjects;
-      stats.bsp.add(walk_priority_tree(sub.bsp, w, view.eye, back_to_front, order));
-    }
-    for (std::uint32_t pi : order) {
-      const Polygon& poly = sub.polygons[pi];
-      ScreenPolygon sp;
-      if (!polygon(poly, w, pi, sp)) continue;
-      sp.colour = poly.colour;
-      sp.opaque = poly.opaque;
-      sp.protect = poly.protect;
-      sp.object = std::int32_t(object_index);
-      sp.subobject = std::int32_t(si);
-      sp.polygon = std::int32_t(pi);
-      stats.vertices_out += sp.vertices.size();
-      out.polygons.push_back(std::move(sp));
-    }
+    ++stats.bsp_subobjects;
+    stats.bsp.add(walk_priority_tree(sub.bsp, w, view.eye, back_to_front, order));
+    for (std::uint32_t pi : order) emit(sub, w, object_index, si, pi);
+  }
+
+  // Polygon pi of the subobject onto the list, unless culled or clipped away.
+  void emit(const Subobject& sub, const WorldSubobject& w, std::uint32_t object_index, std::uint32_t si,
+            std::uint32_t pi) {
+    const Polygon& poly = sub.polygons[pi];
+    ScreenPolygon sp;
+    if (!polygon(poly, w, pi, sp)) return;
+    sp.colour = poly.colour;
+    sp.opaque = poly.opaque;
+    sp.protect = poly.protect;
+    sp.object = std::int32_t(object_index);
+    sp.subobject = std::int32_t(si);
+    sp.polygon = std::int32_t(pi);
+    stats.vertices_out += sp.vertices.size();
+    out.polygons.push_back(std::move(sp));
   }
 };
 

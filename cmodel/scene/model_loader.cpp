@@ -20,6 +20,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include "common/byte_record.hpp"
 #include "common/error.hpp"
 #include "common/isolated_call.hpp"
 #include "common/json_reader.hpp"
@@ -366,51 +367,23 @@ ModelMesh parse_in_process(const void* data, std::size_t size, const std::string
   return flatten(im, *io, file, options);
 }
 
-// The child's answer through the pipe: 'M' and the flattened model, or 'E', the place, a NUL and
-// the rule of the InputError it threw. Native byte order: the reader is the same binary.
-class Writer {
- public:
-  template <class T>
-  void pod(const T& v) {
-    bytes.append(reinterpret_cast<const char*>(&v), sizeof v);
-  }
-  void str(const std::string& s) {
-    pod(std::uint64_t(s.size()));
-    bytes += s;
-  }
-  std::string bytes;
-};
+// The child's answer through the pipe (common/byte_record.hpp): 'M' and the flattened model, or
+// 'E', the place, a NUL and the rule of the InputError it threw.
+template <class T>
+T take(ByteReader& r) {
+  T v{};
+  if (!r.pod(v)) throw std::runtime_error("truncated model record");
+  return v;
+}
 
-class Reader {
- public:
-  explicit Reader(const std::string& b) : b_(b) {}
-  template <class T>
-  T pod() {
-    T v{};
-    if (pos_ + sizeof v > b_.size()) throw std::runtime_error("truncated model record");
-    std::memcpy(&v, b_.data() + pos_, sizeof v);
-    pos_ += sizeof v;
-    return v;
-  }
-  std::uint64_t count(std::size_t each) {
-    const auto n = pod<std::uint64_t>();
-    if (n > (b_.size() - pos_) / each) throw std::runtime_error("corrupt model record");
-    return n;
-  }
-  std::string str() {
-    const auto n = count(1);
-    std::string s = b_.substr(pos_, n);
-    pos_ += n;
-    return s;
-  }
-
- private:
-  const std::string& b_;
-  std::size_t pos_ = 1;  // after the tag
-};
+std::uint64_t take_count(ByteReader& r, std::size_t each) {
+  std::uint64_t n = 0;
+  if (!r.count(n, each)) throw std::runtime_error("corrupt model record");
+  return n;
+}
 
 std::string serialize(const ModelMesh& m) {
-  Writer w;
+  ByteWriter w;
   w.bytes = "M";
   w.pod(std::uint64_t(m.vertices.size()));
   for (const glm::dvec3& v : m.vertices) w.pod(v);
@@ -429,21 +402,22 @@ std::string serialize(const ModelMesh& m) {
 }
 
 ModelMesh deserialize(const std::string& bytes) {
-  Reader r(bytes);
+  ByteReader r(bytes, 1);  // after the tag
   ModelMesh m;
-  m.vertices.resize(r.count(sizeof(glm::dvec3)));
-  for (glm::dvec3& v : m.vertices) v = r.pod<glm::dvec3>();
-  m.faces.resize(r.count(8));
+  m.vertices.resize(take_count(r, sizeof(glm::dvec3)));
+  for (glm::dvec3& v : m.vertices) v = take<glm::dvec3>(r);
+  m.faces.resize(take_count(r, 8));
   for (ModelFace& f : m.faces) {
-    f.indices.resize(r.count(sizeof(std::uint32_t)));
-    for (auto& i : f.indices) i = r.pod<std::uint32_t>();
-    f.has_colour = r.pod<char>() != 0;
-    f.colour = r.pod<Rgb>();
-    f.place = r.pod<ModelFaceRef>();
+    f.indices.resize(take_count(r, sizeof(std::uint32_t)));
+    for (auto& i : f.indices) i = take<std::uint32_t>(r);
+    f.has_colour = take<char>(r) != 0;
+    f.colour = take<Rgb>(r);
+    f.place = take<ModelFaceRef>(r);
   }
-  m.mesh_names.resize(r.count(8));
-  for (std::string& n : m.mesh_names) n = r.str();
-  m.summary = r.pod<ModelSummary>();
+  m.mesh_names.resize(take_count(r, 8));
+  for (std::string& n : m.mesh_names)
+    if (!r.str(n)) throw std::runtime_error("corrupt model record");
+  m.summary = take<ModelSummary>(r);
   return m;
 }
 

@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include <glm/geometric.hpp>
 
+#include "common/byte_record.hpp"
 #include "common/timing.hpp"
 #include "scene/polygon_checks.hpp"
 
@@ -424,23 +425,15 @@ void emit(const Work& w, const std::vector<BuildNode>& nodes, Subobject& s) {
   s.model_faces = std::move(faces);
 }
 
-// ---- The cache: one file per compiled subobject, named by the hash of what the compiler read.
-
-class Bytes {
- public:
-  template <class T>
-  void pod(const T& v) {
-    b.append(reinterpret_cast<const char*>(&v), sizeof v);
-  }
-  std::string b;
-};
+// ---- The cache: one file per compiled subobject, named by the hash of what the compiler read
+// (records of common/byte_record.hpp).
 
 std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h = 1469598103934665603ull) {
   for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
   return h;
 }
 
-void put_polygons(Bytes& out, const std::vector<glm::dvec3>& vertices, const std::vector<Polygon>& polygons) {
+void put_polygons(ByteWriter& out, const std::vector<glm::dvec3>& vertices, const std::vector<Polygon>& polygons) {
   out.pod(std::uint64_t(vertices.size()));
   for (const auto& v : vertices) out.pod(v);
   out.pod(std::uint64_t(polygons.size()));
@@ -455,16 +448,16 @@ void put_polygons(Bytes& out, const std::vector<glm::dvec3>& vertices, const std
 
 // What the compiler reads of a subobject, with its version and setting: the cache key.
 std::uint64_t content_key(const Subobject& s, const PriorityCompilerOptions& o) {
-  Bytes in;
+  ByteWriter in;
   in.pod(kCompilerVersion);
   in.pod(o.max_growth);
   in.pod(std::uint64_t(o.split_allowance));
   put_polygons(in, s.vertices, s.polygons);
-  return fnv1a(in.b);
+  return fnv1a(in.bytes);
 }
 
 std::string payload(const Subobject& s, std::size_t splits, std::size_t slivers) {
-  Bytes out;
+  ByteWriter out;
   put_polygons(out, s.vertices, s.polygons);
   out.pod(std::uint64_t(s.model_faces.size()));
   for (const auto& f : s.model_faces) out.pod(f);
@@ -472,28 +465,10 @@ std::string payload(const Subobject& s, std::size_t splits, std::size_t slivers)
   for (const auto& n : s.bsp) out.pod(n);
   out.pod(std::uint64_t(splits));
   out.pod(std::uint64_t(slivers));
-  return out.b;
+  return out.bytes;
 }
 
-class Cursor {
- public:
-  explicit Cursor(const std::string& b) : b_(b) {}
-  template <class T>
-  bool pod(T& v) {
-    if (pos_ + sizeof v > b_.size()) return false;
-    std::memcpy(&v, b_.data() + pos_, sizeof v);
-    pos_ += sizeof v;
-    return true;
-  }
-  bool count(std::uint64_t& n, std::size_t each) { return pod(n) && n <= (b_.size() - pos_) / each; }
-  bool done() const { return pos_ == b_.size(); }
-
- private:
-  const std::string& b_;
-  std::size_t pos_ = 0;
-};
-
-bool get_polygons(Cursor& c, Subobject& s) {
+bool get_polygons(ByteReader& c, Subobject& s) {
   std::uint64_t n = 0;
   if (!c.count(n, sizeof(glm::dvec3))) return false;
   s.vertices.resize(n);
@@ -521,7 +496,7 @@ bool get_polygons(Cursor& c, Subobject& s) {
 
 // A cached subobject, every index checked (a damaged or foreign file is recompiled, not trusted).
 bool read_compiled(const std::string& bytes, Subobject& s, std::size_t& splits, std::size_t& slivers) {
-  Cursor c(bytes);
+  ByteReader c(bytes);
   std::uint64_t n = 0, a = 0, b = 0;
   if (!get_polygons(c, s) || !c.count(n, sizeof(ModelFaceRef))) return false;
   s.model_faces.resize(n);
