@@ -8,6 +8,7 @@ render_packages=(
   g++ cmake ninja-build pkg-config  # toolchain
   libglm-dev nlohmann-json3-dev libcli11-dev libpng-dev
   libassimp-dev                   # scene models in any format assimp reads (OBJ, AC3D, 3DS, PLY, STL, glTF 2, ...)
+  libsimgear-dev                  # FlightGear's BTG terrain reader: `cig import flightgear` (SimGear, with zlib)
 )
 test_packages=(
   python3                         # layering check, scene generators

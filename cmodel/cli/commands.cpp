@@ -17,6 +17,7 @@ void Commands::add_to(CLI::App& app) {
   manager.add_to(app);
   wordlength.add_to(app);
   engines.add_to(app);
+  import.add_to(app);
   // Listed for --help; `cig cosim ...` never reaches the parser (main.cpp forwards it to cig-cosim).
   app.add_subcommand("cosim",
                      "co-simulate the quadtree RTL against the kernels and the architecture model, or with "
@@ -48,6 +49,7 @@ int Commands::run() {
   if (*manager.sub) return manager.run();
   if (*wordlength.sub) return wordlength.run();
   if (*engines.sub) return engines.run();
+  if (*import.sub) return import.run();
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/cull_command.hpp"
 #include "cli/engines_command.hpp"
+#include "cli/import_command.hpp"
 #include "cli/manager_command.hpp"
 #include "cli/polys_command.hpp"
 #include "cli/raster_command.hpp"
@@ -30,6 +31,7 @@ struct Commands {
   ManagerCommand manager;
   WordLengthCommand wordlength;
   EnginesCommand engines;
+  ImportCommand import;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

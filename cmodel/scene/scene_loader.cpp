@@ -374,8 +374,9 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
   JsonNode root(doc, file, "");
   if (root.at("format").string() != "cig-scene")
     root.at("format").fail("must be \"cig-scene\" (a polygon list uses \"cig-polys\")");
-  root.allow_only({"format", "version", "name", "raster", "view", "channels", "lighting", "fog", "background",
-                   "observer", "objects"});
+  // "provenance": how a tool made the scene (cig import writes it); recorded, not read.
+  root.allow_only({"format", "version", "provenance", "name", "raster", "view", "channels", "lighting", "fog",
+                   "background", "observer", "objects"});
   if (root.at("version").integer() != 1) root.at("version").fail("only version 1 is supported");
 
   Scene s;
