@@ -51,6 +51,8 @@ ALLOWED = {
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree", "cmodel/invparam"},  # every engine
     "cmodel/generator": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
                         "cmodel/frame", "cmodel/image", "cmodel/engine", "cmodel/registry"},
+    # import of foreign airport data (`cig import`): builds scene content, uses nothing after it
+    "cmodel/import": {"cmodel/common", "cmodel/scene"},
     # seed-reproduction studies: above every stage and engine, below the CLI; nothing but the CLI
     # (and verif/) includes them, so a study can change without touching the data path
     "cmodel/studies": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/frame", "cmodel/geometry",
