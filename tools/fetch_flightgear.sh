@@ -20,6 +20,15 @@ for c in "${chunks[@]}"; do
   fi
 done
 root=$cache/fgdata
+# The cache is this script's own folder: it removes and replaces things there, so it refuses a
+# folder it did not make (one that exists, is not empty and has no marker), e.g. $HOME by mistake.
+marker=$cache/.cig-flightgear-cache
+if [ -e "$cache" ] && [ ! -f "$marker" ] && [ -n "$(ls -A -- "$cache" 2>/dev/null)" ]; then
+  echo "fetch_flightgear: $cache: not empty and not made by this script (no .cig-flightgear-cache); name a new folder in CIG_FLIGHTGEAR_CACHE" >&2
+  exit 2
+fi
+mkdir -p "$cache"
+touch "$marker"
 prefix=./usr/share/games/flightgear
 todo=()
 for c in "${chunks[@]}"; do

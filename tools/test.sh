@@ -7,6 +7,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/deps.sh
+# The real database the flightgear.* tests import (Iceland, from Debian's flightgear-data-base; cached
+# in ~/.cache/cig/flightgear after the first run, about 1.5 minutes).
+tools/fetch_flightgear.sh w030n60
 dir=build
 flags=(-DCMAKE_BUILD_TYPE=Release -DCIG_BUILD_TESTS=ON -DCIG_WITH_RTL=ON)
 if [ "${1:-}" = "--sanitize" ]; then

@@ -27,26 +27,31 @@ std::string default_flightgear_root() {
 void ImportCommand::add_to(CLI::App& app) {
   sub = app.add_subcommand("import", "make a scene from another simulator's database (flightgear)");
   sub->require_subcommand(1);
-  flightgear = sub->add_subcommand("flightgear",
-                                   "a scene from FlightGear's data for an airport: terrain (BTG), objects (.stg, AC3D), "
-                                   "runways, markings and lights (apt.dat), an ILS approach (docs/flightgear.md)");
+  flightgear =
+      sub->add_subcommand("flightgear",
+                          "a scene from FlightGear's data for an airport: terrain (BTG), objects (.stg, AC3D), "
+                          "runways, markings and lights (apt.dat), an ILS approach (docs/flightgear.md)");
   CLI::App* f = flightgear;
   f->add_option("icao", icao, "airport (ICAO code in apt.dat, e.g. BIKF)")->required();
   f->add_option("--out", out_file, "the scene file to write")->required();
   f->add_option("--report", report_file, "write the import statistics as JSON");
   f->add_option("--radius-km", radius_km, "terrain and objects within this distance of the airport (default 20)")
       ->check(CLI::Range(0.5, 200.0));
-  f->add_option("--fg-root", fg_root, "FlightGear's data folder (default: the fetch script's cache, see docs/flightgear.md)");
+  f->add_option("--fg-root", fg_root,
+                "FlightGear's data folder (default: the fetch script's cache, see docs/flightgear.md)");
   f->add_option("--approach", approach, "runway end to approach (default: the longest runway's best-equipped end)");
   f->add_option("--time", time, "dusk, night or day (default dusk)")->check(CLI::IsMember({"dusk", "night", "day"}));
-  f->add_option("--from-nm", from_nm, "start of the approach, NM before touchdown (default 10)")->check(CLI::Range(0.0, 100.0));
-  f->add_option("--to-nm", to_nm, "end of the approach, NM before touchdown (default 0)")->check(CLI::Range(0.0, 100.0));
+  f->add_option("--from-nm", from_nm, "start of the approach, NM before touchdown (default 10)")
+      ->check(CLI::Range(0.0, 100.0));
+  f->add_option("--to-nm", to_nm, "end of the approach, NM before touchdown (default 0)")
+      ->check(CLI::Range(0.0, 100.0));
   f->add_option("--speed-kt", speed_kt, "approach speed, knots (default 140)")->check(CLI::Range(10.0, 1000.0));
   f->add_option("--rate", rate, "frames per second of the observer path (default 50)")->check(CLI::Range(0.01, 1000.0));
   f->add_option("--glide-slope", glide_slope, "glide path angle, degrees (default 3)")->check(CLI::Range(0.5, 10.0));
   f->add_option("--cell-m", cell_m, "terrain cell size, m: the scene manager's culling unit (default 2000)")
       ->check(CLI::Range(100.0, 100000.0));
-  f->add_option("--raster", raster, "raster size per channel (default 512)")->check(CLI::IsMember({64, 128, 256, 512, 1024, 2048}));
+  f->add_option("--raster", raster, "raster size per channel (default 512)")
+      ->check(CLI::IsMember({64, 128, 256, 512, 1024, 2048}));
   f->add_flag("--no-objects", no_objects, "leave out the .stg objects (models)");
   f->add_option("--max-model-seconds", max_model_seconds, "time limit of each model's reading (default 60)")
       ->check(CLI::Range(0.1, 3600.0));
@@ -62,7 +67,8 @@ void check_replaceable(const std::string& file) {
   in.read(&head[0], std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
   if (head.find("\"generator\":\"cig import flightgear\"") == std::string::npos)
-    throw InputError(file, "--out", "exists and was not written by cig import flightgear: not replaced (name a new file)");
+    throw InputError(file, "--out",
+                     "exists and was not written by cig import flightgear: not replaced (name a new file)");
 }
 
 // One top-level field per line and one object per line: a scene of a million numbers stays a file

@@ -9,7 +9,10 @@
 namespace cig {
 
 GroundHeight::GroundHeight(const std::vector<TerrainTriangle>& triangles, double radius_m, double cell_m)
-    : tris_(triangles), origin_(-radius_m - cell_m), cell_(cell_m), n_(int(std::ceil(2 * (radius_m + cell_m) / cell_m))) {
+    : tris_(triangles),
+      origin_(-radius_m - cell_m),
+      cell_(cell_m),
+      n_(int(std::ceil(2 * (radius_m + cell_m) / cell_m))) {
   const std::size_t cells = std::size_t(n_) * std::size_t(n_);
   std::vector<std::uint32_t> count(cells + 1, 0);
   auto cell_range = [&](const TerrainTriangle& t, int& x0, int& x1, int& y0, int& y1) {
@@ -81,7 +84,8 @@ void PolygonSoup::add(const std::vector<glm::dvec3>& corners, const Rgb& colour)
   colours.push_back(colour);
 }
 
-RunwayFrame::RunwayFrame(const glm::dvec2& end0, const glm::dvec2& end1, double width_m) : a(end0), b(end1), width(width_m) {
+RunwayFrame::RunwayFrame(const glm::dvec2& end0, const glm::dvec2& end1, double width_m)
+    : a(end0), b(end1), width(width_m) {
   length = glm::length(end1 - end0);
   along = (end1 - end0) / length;
   right = {along.y, -along.x};
@@ -117,18 +121,25 @@ const Rgb kMarkingWhite{0.85, 0.85, 0.85};
 // apt.dat surface codes: 1 asphalt, 2 concrete, 3 turf, 4 dirt, 5 gravel, 12 dry lakebed, 13 water.
 Rgb surface_colour(int surface) {
   switch (surface) {
-    case 1: return {0.16, 0.16, 0.17};
-    case 2: return {0.42, 0.42, 0.40};
-    case 3: return {0.20, 0.30, 0.12};
-    case 4: return {0.35, 0.27, 0.18};
-    case 5: return {0.40, 0.38, 0.34};
-    default: return {0.30, 0.30, 0.30};
+    case 1:
+      return {0.16, 0.16, 0.17};
+    case 2:
+      return {0.42, 0.42, 0.40};
+    case 3:
+      return {0.20, 0.30, 0.12};
+    case 4:
+      return {0.35, 0.27, 0.18};
+    case 5:
+      return {0.40, 0.38, 0.34};
+    default:
+      return {0.30, 0.30, 0.30};
   }
 }
 
 // Seven-segment digit strokes (a top, b top right, c bottom right, d bottom, e bottom left, f top
 // left, g middle) for runway designators: ICAO's numerals (Annex 14 Fig. 5-3) reduced to strokes.
-const char* const kSegments[10] = {"abcdef", "bc", "abged", "abgcd", "fgbc", "afgcd", "afgedc", "abc", "abcdefg", "abcdfg"};
+const char* const kSegments[10] = {"abcdef", "bc",     "abged", "abgcd",   "fgbc",
+                                   "afgcd",  "afgedc", "abc",   "abcdefg", "abcdfg"};
 
 struct RunwayBuilder {
   const RunwayFrame& f;
@@ -137,9 +148,7 @@ struct RunwayBuilder {
   // A rectangle in end k's frame (s from that end's point along its landing direction, t to the
   // right), cut at the profile stations so that each piece lies in the surface's plane there.
   void rect(PolygonSoup& soup, int end, double s0, double s1, double t0, double t1, const Rgb& c) {
-    if (end == 1) {
-      std::tie(s0, s1, t0, t1) = std::make_tuple(f.length - s1, f.length - s0, -t1, -t0);
-    }
+    if (end == 1) { std::tie(s0, s1, t0, t1) = std::make_tuple(f.length - s1, f.length - s0, -t1, -t0); }
     const std::vector<double>& st = out.station_s;
     for (std::size_t k = 0; k + 1 < st.size(); ++k) {
       const double p0 = std::max(s0, st[k]), p1 = std::min(s1, st[k + 1]);
@@ -159,13 +168,27 @@ struct RunwayBuilder {
     const double h = 9, w = 4.5, k = 1;  // ICAO: numerals 9 m high
     for (const char* p = kSegments[d]; *p; ++p) {
       switch (*p) {
-        case 'a': marking(end, s0 + h - k, s0 + h, tl, tl + w); break;
-        case 'b': marking(end, s0 + h / 2, s0 + h, tl + w - k, tl + w); break;
-        case 'c': marking(end, s0, s0 + h / 2, tl + w - k, tl + w); break;
-        case 'd': marking(end, s0, s0 + k, tl, tl + w); break;
-        case 'e': marking(end, s0, s0 + h / 2, tl, tl + k); break;
-        case 'f': marking(end, s0 + h / 2, s0 + h, tl, tl + k); break;
-        default: marking(end, s0 + (h - k) / 2, s0 + (h + k) / 2, tl, tl + w); break;
+        case 'a':
+          marking(end, s0 + h - k, s0 + h, tl, tl + w);
+          break;
+        case 'b':
+          marking(end, s0 + h / 2, s0 + h, tl + w - k, tl + w);
+          break;
+        case 'c':
+          marking(end, s0, s0 + h / 2, tl + w - k, tl + w);
+          break;
+        case 'd':
+          marking(end, s0, s0 + k, tl, tl + w);
+          break;
+        case 'e':
+          marking(end, s0, s0 + h / 2, tl, tl + k);
+          break;
+        case 'f':
+          marking(end, s0 + h / 2, s0 + h, tl, tl + k);
+          break;
+        default:
+          marking(end, s0 + (h - k) / 2, s0 + (h + k) / 2, tl, tl + w);
+          break;
       }
     }
   }

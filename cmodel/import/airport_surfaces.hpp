@@ -53,7 +53,7 @@ struct RunwayFrame {
 struct RunwayPolygons {
   PolygonSoup markings, surface;
   std::size_t marking_polygons = 0;
-  double lift_m = 0;  // the surface's height above the highest terrain under it
+  double lift_m = 0;                         // the surface's height above the highest terrain under it
   std::vector<double> station_s, station_z;  // the profile: surface height along the centreline
   double z_at(double s) const;
 };

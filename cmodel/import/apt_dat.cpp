@@ -52,7 +52,9 @@ struct Row {
   int line;
   std::vector<std::string> f;
 
-  [[noreturn]] void fail(const std::string& rule) const { throw InputError(file, "line " + std::to_string(line), rule); }
+  [[noreturn]] void fail(const std::string& rule) const {
+    throw InputError(file, "line " + std::to_string(line), rule);
+  }
   void need(std::size_t n, const char* what) const {
     if (f.size() < n)
       fail(std::string(what) + " row needs " + std::to_string(n) + " fields, has " + std::to_string(f.size()));
@@ -162,7 +164,8 @@ AptAirport read_apt_dat(const std::string& file, const std::string& icao) {
   AptAirport a;
   std::string line;
   // Line 1: "I" or "A" (byte order, unused); line 2: the version number and the copyright.
-  if (!in.next(line) || (line != "I" && line != "A")) throw InputError(file, "line 1", "not an apt.dat file (want 'I' or 'A')");
+  if (!in.next(line) || (line != "I" && line != "A"))
+    throw InputError(file, "line 1", "not an apt.dat file (want 'I' or 'A')");
   if (!in.next(line)) throw InputError(file, "line 2", "the version line is missing");
   const std::vector<std::string> v = split(line);
   a.version = v.empty() ? "" : v[0];
@@ -177,7 +180,8 @@ AptAirport read_apt_dat(const std::string& file, const std::string& icao) {
     a.elevation_ft = r.number(1, -2000, 40000, "airport elevation (ft)");
     for (std::size_t i = 5; i < r.f.size(); ++i) a.name += (i > 5 ? " " : "") + r.f[i];
     read_airport_rows(in, file, a);
-    if (a.runways.empty()) throw InputError(file, "line " + std::to_string(r.line), "airport " + icao + " has no land runway (row 100)");
+    if (a.runways.empty())
+      throw InputError(file, "line " + std::to_string(r.line), "airport " + icao + " has no land runway (row 100)");
     return a;
   }
   throw InputError(file, "", "no airport '" + icao + "' (header rows 1, 16, 17)");

@@ -25,7 +25,8 @@ std::vector<SceneryTile> tiles_within(double lat_deg, double lon_deg, double rad
   const double dlat = radius_m / m_per_deg * 1.01;
   const double dlon = std::min(180.0, dlat / std::max(0.01, std::cos(lat_deg * 3.14159265358979323846 / 180)));
   std::vector<SGBucket> buckets;
-  sgGetBuckets(SGGeod::fromDeg(lon_deg - dlon, lat_deg - dlat), SGGeod::fromDeg(lon_deg + dlon, lat_deg + dlat), buckets);
+  sgGetBuckets(SGGeod::fromDeg(lon_deg - dlon, lat_deg - dlat), SGGeod::fromDeg(lon_deg + dlon, lat_deg + dlat),
+               buckets);
   std::vector<SceneryTile> out;
   for (const SGBucket& b : buckets) {
     const double w = b.get_width(), h = b.get_height();
@@ -34,7 +35,8 @@ std::vector<SceneryTile> tiles_within(double lat_deg, double lon_deg, double rad
     const double nx = std::clamp(lon_deg, cx - w / 2, cx + w / 2), ny = std::clamp(lat_deg, cy - h / 2, cy + h / 2);
     const double ex = (nx - lon_deg) * m_per_deg * std::cos(lat_deg * 3.14159265358979323846 / 180);
     const double ey = (ny - lat_deg) * m_per_deg;
-    if (std::hypot(ex, ey) <= radius_m * 1.01) out.push_back({b.gen_base_path(), b.gen_index()});
+    if (std::hypot(ex, ey) <= radius_m * 1.01)
+      out.push_back({b.gen_base_path(), b.gen_index(), cy - h / 2, cx - w / 2, cy + h / 2, cx + w / 2});
   }
   return out;
 }
@@ -59,7 +61,8 @@ struct TriangleSink {
   void add(int a, int b, int c, std::uint16_t m) {
     const int n = int(local.size());
     ++mesh.triangles_read;
-    if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n) throw InputError("", "", "a triangle's vertex index is out of range");
+    if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n)
+      throw InputError("", "", "a triangle's vertex index is out of range");
     TerrainTriangle t{{local[std::size_t(a)], local[std::size_t(b)], local[std::size_t(c)]}, m};
     const glm::dvec3 g = (t.v[0] + t.v[1] + t.v[2]) / 3.0;
     if (std::hypot(g.x, g.y) > radius) {
@@ -95,19 +98,19 @@ void add_groups(const group_list& groups, const string_list& materials, int kind
 
 void read_btg(const std::string& file, const LocalFrame& frame, double radius_m, bool airport, TerrainMesh& mesh) {
   SGBinObject obj;
-  if (!obj.read_bin(SGPath(file))) throw InputError(file, "", "SimGear's BTG reader could not read it (not a BTG file, or damaged)");
+  if (!obj.read_bin(SGPath(file)))
+    throw InputError(file, "", "SimGear's BTG reader could not read it (not a BTG file, or damaged)");
   const SGVec3d c = obj.get_gbs_center();
   std::vector<glm::dvec3> local;
   local.reserve(obj.get_wgs84_nodes().size());
-  for (const SGVec3d& p : obj.get_wgs84_nodes()) local.push_back(frame.from_ecef({c.x() + p.x(), c.y() + p.y(), c.z() + p.z()}));
+  for (const SGVec3d& p : obj.get_wgs84_nodes())
+    local.push_back(frame.from_ecef({c.x() + p.x(), c.y() + p.y(), c.z() + p.z()}));
   TriangleSink sink{local, radius_m, mesh};
   try {
     add_groups(obj.get_tris_v(), obj.get_tri_materials(), 0, sink);
     add_groups(obj.get_strips_v(), obj.get_strip_materials(), 1, sink);
     add_groups(obj.get_fans_v(), obj.get_fan_materials(), 2, sink);
-  } catch (const InputError& e) {
-    throw InputError(file, "", e.rule());
-  }
+  } catch (const InputError& e) { throw InputError(file, "", e.rule()); }
   if (airport) {
     for (std::size_t g = 0; g < obj.get_pts_v().size(); ++g) {
       const std::uint16_t m = mesh.material(obj.get_pt_materials()[g]);
@@ -116,6 +119,24 @@ void read_btg(const std::string& file, const LocalFrame& frame, double radius_m,
     }
   }
   ++mesh.files;
+}
+
+void add_ocean_tile(const SceneryTile& tile, const LocalFrame& frame, double radius_m, TerrainMesh& mesh) {
+  constexpr int kQuads = 8;
+  std::vector<glm::dvec3> local;
+  for (int j = 0; j <= kQuads; ++j)
+    for (int i = 0; i <= kQuads; ++i)
+      local.push_back(frame.from_geodetic({tile.lat0_deg + (tile.lat1_deg - tile.lat0_deg) * j / kQuads,
+                                           tile.lon0_deg + (tile.lon1_deg - tile.lon0_deg) * i / kQuads, 0}));
+  TriangleSink sink{local, radius_m, mesh};
+  const std::uint16_t ocean = mesh.material("Ocean");
+  for (int j = 0; j < kQuads; ++j)
+    for (int i = 0; i < kQuads; ++i) {
+      const int a = j * (kQuads + 1) + i, b = a + 1, c = a + kQuads + 1, d = c + 1;
+      sink.add(a, b, d, ocean);
+      sink.add(a, d, c, ocean);
+    }
+  ++mesh.ocean_tiles;
 }
 
 namespace {
@@ -156,9 +177,11 @@ void read_stg(const std::string& file, const std::string& data_root, StgFile& ou
       o.named = name;
       o.place = file + ":" + std::to_string(number);
       if (!(s >> o.where.lon_deg >> o.where.lat_deg >> o.where.height_m >> o.heading_ccw_deg))
-        throw InputError(file, "line " + std::to_string(number), kind + " needs a path, longitude, latitude, elevation and heading");
+        throw InputError(file, "line " + std::to_string(number),
+                         kind + " needs a path, longitude, latitude, elevation and heading");
       if (!(s >> o.pitch_deg >> o.roll_deg)) o.pitch_deg = o.roll_deg = 0;
-      o.path = kind == "OBJECT_SHARED" ? shared_file(data_root, name) : (fs::is_regular_file(dir / name) ? (dir / name).string() : "");
+      o.path = kind == "OBJECT_SHARED" ? shared_file(data_root, name)
+                                       : (fs::is_regular_file(dir / name) ? (dir / name).string() : "");
       if (o.path.empty()) ++out.missing;
       out.objects.push_back(o);
     } else if (kind == "OBJECT_SIGN") {

@@ -18,6 +18,7 @@ namespace cig {
 struct SceneryTile {
   std::string folder;
   long index = 0;
+  double lat0_deg = 0, lon0_deg = 0, lat1_deg = 0, lon1_deg = 0;  // its extent
 };
 
 // The tiles any part of which lies within radius_m of (lat, lon).
@@ -39,7 +40,7 @@ struct TerrainMesh {
   std::vector<std::string> materials;  // BTG material names ("Grass", "Ocean", "pa_tiedown"...)
   std::vector<TerrainTriangle> triangles;
   std::vector<BtgLightPoint> lights;
-  std::size_t files = 0, triangles_read = 0, triangles_outside = 0, degenerate = 0;
+  std::size_t files = 0, ocean_tiles = 0, triangles_read = 0, triangles_outside = 0, degenerate = 0;
   std::uint16_t material(const std::string& name);
 };
 
@@ -48,19 +49,23 @@ struct TerrainMesh {
 // (OBJECT in the .stg), whose light points are kept. Throws InputError naming the file.
 void read_btg(const std::string& file, const LocalFrame& frame, double radius_m, bool airport, TerrainMesh& mesh);
 
+// A tile TerraGear made nothing for is open sea (FlightGear draws such tiles as ocean too): its
+// extent in 8 x 8 quads of material Ocean at height 0, those within radius_m appended to `mesh`.
+void add_ocean_tile(const SceneryTile& tile, const LocalFrame& frame, double radius_m, TerrainMesh& mesh);
+
 // An object a .stg file places: OBJECT_SHARED (path under the data folder) or OBJECT_STATIC (next
 // to the .stg); heading counter-clockwise from north as the .stg gives it.
 struct StgObject {
-  std::string path;  // resolved file (.ac or .xml), "" when it is missing
-  std::string named; // as the .stg names it
-  Geodetic where;    // height: metres above sea level
+  std::string path;   // resolved file (.ac or .xml), "" when it is missing
+  std::string named;  // as the .stg names it
+  Geodetic where;     // height: metres above sea level
   double heading_ccw_deg = 0, pitch_deg = 0, roll_deg = 0;
   std::string place;  // "file:line"
 };
 
 struct StgFile {
-  std::vector<std::string> terrain;  // OBJECT_BASE .btg files (resolved, with .gz when compressed)
-  std::vector<std::string> airports; // OBJECT .btg files
+  std::vector<std::string> terrain;   // OBJECT_BASE .btg files (resolved, with .gz when compressed)
+  std::vector<std::string> airports;  // OBJECT .btg files
   std::vector<StgObject> objects;
   std::size_t signs = 0, other = 0, missing = 0;  // OBJECT_SIGN rows, other kinds, objects whose file is missing
 };

@@ -49,27 +49,56 @@ double elapsed_ms(std::chrono::steady_clock::time_point t0) {
 
 // Colours of TerraGear's materials (FlightGear's Materials/base/materials.xml names), linear RGB.
 Rgb material_colour(const std::string& m, bool& known) {
-  static const std::map<std::string, Rgb> table = {
-      {"Ocean", {0.04, 0.10, 0.16}},        {"Lake", {0.05, 0.12, 0.18}},         {"Pond", {0.05, 0.12, 0.18}},
-      {"Reservoir", {0.05, 0.12, 0.18}},    {"Stream", {0.06, 0.13, 0.18}},       {"Canal", {0.06, 0.13, 0.18}},
-      {"Lagoon", {0.05, 0.13, 0.17}},       {"Estuary", {0.05, 0.12, 0.16}},      {"Watercourse", {0.06, 0.13, 0.18}},
-      {"Grass", {0.22, 0.30, 0.12}},        {"Grassland", {0.24, 0.30, 0.14}},    {"Heath", {0.26, 0.25, 0.14}},
-      {"Scrub", {0.22, 0.24, 0.12}},        {"MixedForest", {0.10, 0.18, 0.08}},  {"DeciduousForest", {0.12, 0.20, 0.08}},
-      {"EvergreenForest", {0.08, 0.15, 0.08}}, {"Rock", {0.30, 0.28, 0.26}},     {"Lava", {0.16, 0.15, 0.15}},
-      {"Sand", {0.55, 0.50, 0.38}},         {"Glacier", {0.80, 0.82, 0.85}},      {"SnowCover", {0.85, 0.86, 0.88}},
-      {"Town", {0.36, 0.33, 0.30}},         {"SubUrban", {0.33, 0.32, 0.27}},     {"Urban", {0.38, 0.36, 0.33}},
-      {"BuiltUpCover", {0.36, 0.33, 0.30}}, {"Industrial", {0.38, 0.36, 0.34}},   {"Construction", {0.40, 0.36, 0.30}},
-      {"Asphalt", {0.16, 0.16, 0.17}},      {"Road", {0.16, 0.16, 0.17}},         {"Freeway", {0.16, 0.16, 0.17}},
-      {"Dirt", {0.35, 0.27, 0.18}},         {"Gravel", {0.40, 0.38, 0.34}},       {"Airport", {0.26, 0.30, 0.16}},
-      {"DryCrop", {0.40, 0.36, 0.20}},      {"IrrCrop", {0.26, 0.34, 0.14}},      {"CropGrass", {0.28, 0.34, 0.14}},
-      {"Marsh", {0.18, 0.24, 0.14}},        {"Bog", {0.20, 0.22, 0.14}},          {"Barren", {0.32, 0.30, 0.27}},
-      {"OpenMining", {0.40, 0.36, 0.32}},   {"Default", {0.28, 0.28, 0.24}}};
+  static const std::map<std::string, Rgb> table = {{"Ocean", {0.04, 0.10, 0.16}},
+                                                   {"Lake", {0.05, 0.12, 0.18}},
+                                                   {"Pond", {0.05, 0.12, 0.18}},
+                                                   {"Reservoir", {0.05, 0.12, 0.18}},
+                                                   {"Stream", {0.06, 0.13, 0.18}},
+                                                   {"Canal", {0.06, 0.13, 0.18}},
+                                                   {"Lagoon", {0.05, 0.13, 0.17}},
+                                                   {"Estuary", {0.05, 0.12, 0.16}},
+                                                   {"Watercourse", {0.06, 0.13, 0.18}},
+                                                   {"Grass", {0.22, 0.30, 0.12}},
+                                                   {"Grassland", {0.24, 0.30, 0.14}},
+                                                   {"Heath", {0.26, 0.25, 0.14}},
+                                                   {"Scrub", {0.22, 0.24, 0.12}},
+                                                   {"MixedForest", {0.10, 0.18, 0.08}},
+                                                   {"DeciduousForest", {0.12, 0.20, 0.08}},
+                                                   {"EvergreenForest", {0.08, 0.15, 0.08}},
+                                                   {"Rock", {0.30, 0.28, 0.26}},
+                                                   {"Lava", {0.16, 0.15, 0.15}},
+                                                   {"Sand", {0.55, 0.50, 0.38}},
+                                                   {"Glacier", {0.80, 0.82, 0.85}},
+                                                   {"SnowCover", {0.85, 0.86, 0.88}},
+                                                   {"Town", {0.36, 0.33, 0.30}},
+                                                   {"SubUrban", {0.33, 0.32, 0.27}},
+                                                   {"Urban", {0.38, 0.36, 0.33}},
+                                                   {"BuiltUpCover", {0.36, 0.33, 0.30}},
+                                                   {"Industrial", {0.38, 0.36, 0.34}},
+                                                   {"Construction", {0.40, 0.36, 0.30}},
+                                                   {"Asphalt", {0.16, 0.16, 0.17}},
+                                                   {"Road", {0.16, 0.16, 0.17}},
+                                                   {"Freeway", {0.16, 0.16, 0.17}},
+                                                   {"Dirt", {0.35, 0.27, 0.18}},
+                                                   {"Gravel", {0.40, 0.38, 0.34}},
+                                                   {"Airport", {0.26, 0.30, 0.16}},
+                                                   {"DryCrop", {0.40, 0.36, 0.20}},
+                                                   {"IrrCrop", {0.26, 0.34, 0.14}},
+                                                   {"CropGrass", {0.28, 0.34, 0.14}},
+                                                   {"Marsh", {0.18, 0.24, 0.14}},
+                                                   {"Bog", {0.20, 0.22, 0.14}},
+                                                   {"Barren", {0.32, 0.30, 0.27}},
+                                                   {"OpenMining", {0.40, 0.36, 0.32}},
+                                                   {"GolfCourse", {0.24, 0.34, 0.13}},
+                                                   {"NaturalCrop", {0.30, 0.32, 0.16}},
+                                                   {"Default", {0.28, 0.28, 0.24}}};
   auto it = table.find(m);
   known = true;
   if (it != table.end()) return it->second;
   if (m.rfind("pa_", 0) == 0) return {0.16, 0.16, 0.17};  // asphalt pavement (its painted textures)
   if (m.rfind("pc_", 0) == 0) return {0.42, 0.42, 0.40};  // concrete pavement
-  if (m.rfind("lf_", 0) == 0) return m.find("yellow") != std::string::npos ? Rgb{0.80, 0.62, 0.05} : Rgb{0.85, 0.85, 0.85};
+  if (m.rfind("lf_", 0) == 0)
+    return m.find("yellow") != std::string::npos ? Rgb{0.80, 0.62, 0.05} : Rgb{0.85, 0.85, 0.85};
   known = false;
   return {0.28, 0.28, 0.24};
 }
@@ -102,7 +131,8 @@ struct TerrainCounts {
 };
 
 // A terrain cell: one subobject per material, TerraGear's painted lines (decals) first.
-json terrain_cell(const std::string& name, const TerrainMesh& mesh, const std::vector<std::uint32_t>& tris, TerrainCounts& counts) {
+json terrain_cell(const std::string& name, const TerrainMesh& mesh, const std::vector<std::uint32_t>& tris,
+                  TerrainCounts& counts) {
   std::map<std::uint16_t, std::vector<std::uint32_t>> by_material;
   for (std::uint32_t t : tris) by_material[mesh.triangles[t].material].push_back(t);
   std::vector<std::uint16_t> order;
@@ -135,7 +165,10 @@ json terrain_cell(const std::string& name, const TerrainMesh& mesh, const std::v
       if (!known) ++counts.unknown_materials[mat];
     }
     if (polys.empty()) continue;
-    subs.push_back({{"name", mat}, {"colour", colour(c)}, {"crease_angle", 30}, {"vertices", std::move(sv.vertices)},
+    subs.push_back({{"name", mat},
+                    {"colour", colour(c)},
+                    {"crease_angle", 30},
+                    {"vertices", std::move(sv.vertices)},
                     {"polygons", std::move(polys)}});
   }
   if (subs.empty()) return json();
@@ -156,7 +189,8 @@ json terrain_objects(const TerrainMesh& mesh, double radius_m, double cell_m, Te
   }
   json out = json::array();
   for (const auto& kv : cells) {
-    json o = terrain_cell("terrain_" + std::to_string(kv.first.first) + "_" + std::to_string(kv.first.second), mesh, kv.second, counts);
+    json o = terrain_cell("terrain_" + std::to_string(kv.first.first) + "_" + std::to_string(kv.first.second), mesh,
+                          kv.second, counts);
     if (!o.is_null()) out.push_back(std::move(o));
   }
   return out;
@@ -197,8 +231,8 @@ json light_point(const AirportLight& l, const GroundHeight& ground, double fallb
 
 // Light objects: one per runway end and light type, so the scene manager culls them in groups and
 // the report names them.
-void add_light_objects(const std::vector<AirportLight>& lights, const GroundHeight& ground, double fallback_z, json& objects,
-                       std::map<std::string, std::size_t>& by_type) {
+void add_light_objects(const std::vector<AirportLight>& lights, const GroundHeight& ground, double fallback_z,
+                       json& objects, std::map<std::string, std::size_t>& by_type) {
   std::map<std::string, json> groups;
   for (const AirportLight& l : lights) {
     const std::string type = to_string(l.type);
@@ -292,31 +326,36 @@ struct ApproachEnd {
 };
 
 double runway_length(const AptRunway& r, const LocalFrame& frame) {
-  return glm::length(frame.east_north(r.ends[1].lat_deg, r.ends[1].lon_deg) - frame.east_north(r.ends[0].lat_deg, r.ends[0].lon_deg));
+  return glm::length(frame.east_north(r.ends[1].lat_deg, r.ends[1].lon_deg) -
+                     frame.east_north(r.ends[0].lat_deg, r.ends[0].lon_deg));
 }
 
 // The named runway end, or the longest runway's end best equipped for an ILS approach (precision
 // markings, approach lights, touchdown zone lights).
-ApproachEnd choose_approach(const AptAirport& a, const LocalFrame& frame, const std::string& wanted, const std::string& apt_file) {
+ApproachEnd choose_approach(const AptAirport& a, const LocalFrame& frame, const std::string& wanted,
+                            const std::string& apt_file) {
   std::string ends;
   for (std::size_t r = 0; r < a.runways.size(); ++r)
     for (int k = 0; k < 2; ++k) {
       if (a.runways[r].ends[k].id == wanted) return {r, k};
       ends += (ends.empty() ? "" : ", ") + a.runways[r].ends[k].id;
     }
-  if (!wanted.empty()) throw InputError(apt_file, "airport " + a.icao, "no runway end '" + wanted + "' (it has " + ends + ")");
+  if (!wanted.empty())
+    throw InputError(apt_file, "airport " + a.icao, "no runway end '" + wanted + "' (it has " + ends + ")");
   std::size_t best = 0;
   for (std::size_t r = 1; r < a.runways.size(); ++r)
     if (runway_length(a.runways[r], frame) > runway_length(a.runways[best], frame)) best = r;
-  auto score = [](const AptRunwayEnd& e) { return (e.markings == 3 ? 4 : 0) + (e.approach_lights > 0 ? 2 : 0) + e.touchdown_zone_lights; };
+  auto score = [](const AptRunwayEnd& e) {
+    return (e.markings == 3 ? 4 : 0) + (e.approach_lights > 0 ? 2 : 0) + e.touchdown_zone_lights;
+  };
   const AptRunway& rw = a.runways[best];
   return {best, score(rw.ends[1]) > score(rw.ends[0]) ? 1 : 0};
 }
 
 // The observer on the glide path, from `from_nm` to `to_nm` before its ground point, at constant
 // speed; keyframes at the ends of a straight line (frames between interpolate exactly).
-json approach_keyframes(const FlightgearImportOptions& o, const RunwayFrame& f, const RunwayPolygons& rp, const AptRunway& rw,
-                        int end, std::size_t& frames) {
+json approach_keyframes(const FlightgearImportOptions& o, const RunwayFrame& f, const RunwayPolygons& rp,
+                        const AptRunway& rw, int end, std::size_t& frames) {
   const double disp = rw.ends[end].displaced_threshold_m;
   const double s_gpi = end == 0 ? disp + kGlidePathOriginM : f.length - disp - kGlidePathOriginM;
   const glm::dvec2 landing = end == 0 ? f.along : -f.along;
@@ -331,8 +370,11 @@ json approach_keyframes(const FlightgearImportOptions& o, const RunwayFrame& f, 
   for (std::size_t frame : {std::size_t(0), frames - 1}) {
     const double d = d0 - double(frame) * v / o.frame_rate;
     const glm::dvec2 h = gpi - d * landing;
-    keys.push_back({{"frame", frame}, {"position", point({h.x, h.y, z_gpi + d * tan_gs})}, {"heading", round_mm(heading)},
-                    {"pitch", -o.glide_slope_deg}, {"roll", 0}});
+    keys.push_back({{"frame", frame},
+                    {"position", point({h.x, h.y, z_gpi + d * tan_gs})},
+                    {"heading", round_mm(heading)},
+                    {"pitch", -o.glide_slope_deg},
+                    {"roll", 0}});
     if (frames == 1) break;
   }
   return keys;
@@ -345,9 +387,16 @@ void environment(TimeOfDay t, json& scene) {
   glm::dvec3 sun;
   double sun_i, ambient, fog_start, fog_end;
   switch (t) {
-    case TimeOfDay::day: sky = {0.55, 0.68, 0.85}, sun = {-0.4, -0.6, 0.7}, sun_i = 0.7, ambient = 0.3, fog_start = 2000, fog_end = 40000; break;
-    case TimeOfDay::night: sky = {0.012, 0.014, 0.03}, sun = {0, 0, 1}, sun_i = 0, ambient = 0.05, fog_start = 0, fog_end = 30000; break;
-    default: sky = {0.28, 0.24, 0.32}, sun = {-0.92, -0.38, 0.035}, sun_i = 0.25, ambient = 0.12, fog_start = 1000, fog_end = 30000; break;
+    case TimeOfDay::day:
+      sky = {0.55, 0.68, 0.85}, sun = {-0.4, -0.6, 0.7}, sun_i = 0.7, ambient = 0.3, fog_start = 2000, fog_end = 40000;
+      break;
+    case TimeOfDay::night:
+      sky = {0.012, 0.014, 0.03}, sun = {0, 0, 1}, sun_i = 0, ambient = 0.05, fog_start = 0, fog_end = 30000;
+      break;
+    default:
+      sky = {0.28, 0.24, 0.32}, sun = {-0.92, -0.38, 0.035}, sun_i = 0.35, ambient = 0.22, fog_start = 1000,
+      fog_end = 30000;
+      break;
   }
   scene["lighting"] = {{"sun_direction", point(sun)}, {"sun_intensity", sun_i}, {"ambient", ambient}};
   scene["fog"] = {{"colour", colour(sky)}, {"start", fog_start}, {"end", fog_end}};
@@ -367,10 +416,12 @@ struct Sources {
   TerrainMesh terrain;
   StgFile stg;
   std::vector<std::string> tiles;
+  std::vector<SceneryTile> ocean;  // tiles without scenery: open sea
 };
 
 // The tiles' .stg files (Terrain/ and Objects/), their terrain and airport BTGs.
-Sources read_scenery(const std::string& root, const AptAirport& a, const Geodetic& arp, const LocalFrame& frame, double radius_m) {
+Sources read_scenery(const std::string& root, const AptAirport& a, const Geodetic& arp, const LocalFrame& frame,
+                     double radius_m) {
   Sources s;
   const fs::path terrain = fs::path(root) / "Scenery" / "Terrain", objects = fs::path(root) / "Scenery" / "Objects";
   for (const SceneryTile& t : tiles_within(arp.lat_deg, arp.lon_deg, radius_m)) {
@@ -378,13 +429,17 @@ Sources read_scenery(const std::string& root, const AptAirport& a, const Geodeti
     const std::size_t before = s.stg.terrain.size() + s.stg.airports.size();
     read_stg((terrain / t.folder / name).string(), root, s.stg);
     read_stg((objects / t.folder / name).string(), root, s.stg);
-    if (s.stg.terrain.size() + s.stg.airports.size() > before) s.tiles.push_back(t.folder + "/" + std::to_string(t.index));
+    if (s.stg.terrain.size() + s.stg.airports.size() > before)
+      s.tiles.push_back(t.folder + "/" + std::to_string(t.index));
+    else s.ocean.push_back(t);
   }
   if (s.tiles.empty())
-    throw InputError((terrain).string(), "",
-                     "no scenery tiles around " + a.icao + " (fetch them: tools/fetch_flightgear.sh, see docs/flightgear.md)");
+    throw InputError(
+        (terrain).string(), "",
+        "no scenery tiles around " + a.icao + " (fetch them: tools/fetch_flightgear.sh, see docs/flightgear.md)");
   for (const std::string& f : s.stg.terrain) read_btg(f, frame, radius_m, false, s.terrain);
   for (const std::string& f : s.stg.airports) read_btg(f, frame, radius_m, true, s.terrain);
+  for (const SceneryTile& t : s.ocean) add_ocean_tile(t, frame, radius_m, s.terrain);
   return s;
 }
 
@@ -414,19 +469,58 @@ Runway light_runway(const AptRunway& rw, const LocalFrame& frame) {
 namespace cig {
 namespace {
 
+// The laid-out lights against TerraGear's own (the airport BTG's light points, made by other code
+// from its own apt.dat): per light type, how many have a TerraGear light within kMatchM, and the
+// median and largest horizontal distance of those. A check on the layout, in the report.
+json terragear_light_check(const std::vector<AirportLight>& lights, const TerrainMesh& mesh) {
+  constexpr double kCellM = 10, kMatchM = 5;
+  std::map<std::pair<long, long>, std::vector<glm::dvec2>> grid;
+  for (const BtgLightPoint& b : mesh.lights)
+    grid[{long(std::floor(b.position.x / kCellM)), long(std::floor(b.position.y / kCellM))}].push_back(
+        {b.position.x, b.position.y});
+  std::map<std::string, std::vector<double>> matched;
+  std::map<std::string, std::size_t> total;
+  for (const AirportLight& l : lights) {
+    const std::string type = to_string(l.type);
+    ++total[type];
+    const long cx = long(std::floor(l.position.x / kCellM)), cy = long(std::floor(l.position.y / kCellM));
+    double best = 1e300;
+    for (long y = cy - 1; y <= cy + 1; ++y)
+      for (long x = cx - 1; x <= cx + 1; ++x) {
+        auto it = grid.find({x, y});
+        if (it == grid.end()) continue;
+        for (const glm::dvec2& p : it->second)
+          best = std::min(best, std::hypot(p.x - l.position.x, p.y - l.position.y));
+      }
+    if (best <= kMatchM) matched[type].push_back(best);
+  }
+  json out = {{"terragear_lights", mesh.lights.size()}, {"match_within_m", kMatchM}};
+  for (const auto& kv : total) {
+    std::vector<double>& d = matched[kv.first];
+    std::sort(d.begin(), d.end());
+    out["by_type"][kv.first] = {{"lights", kv.second},
+                                {"matched", d.size()},
+                                {"median_m", d.empty() ? 0.0 : round_mm(d[d.size() / 2])},
+                                {"max_m", d.empty() ? 0.0 : round_mm(d.back())}};
+  }
+  return out;
+}
+
 struct AirportParts {
   json runways = json::array();  // statistics per runway
   std::map<std::string, std::size_t> lights_by_type;
-  std::size_t light_objects_skipped = 0, marking_polygons = 0;
+  std::size_t light_objects_skipped = 0, marking_polygons = 0, edge_lights_removed = 0;
   json keyframes;
   std::size_t frames = 0;
   std::string approach_end;
   double approach_heading = 0;
+  json terragear_check;
 };
 
 // Runways (surface and markings), their lights and the light objects (PAPI, VASI), and the approach.
-void airport_objects(const FlightgearImportOptions& o, const AptAirport& a, const LocalFrame& frame, const GroundHeight& ground,
-                     const ApproachEnd& approach, json& objects, AirportParts& parts) {
+void airport_objects(const FlightgearImportOptions& o, const AptAirport& a, const LocalFrame& frame,
+                     const GroundHeight& ground, const TerrainMesh& mesh, const ApproachEnd& approach, json& objects,
+                     AirportParts& parts) {
   std::vector<AirportLight> lights;
   for (std::size_t r = 0; r < a.runways.size(); ++r) {
     const AptRunway& rw = a.runways[r];
@@ -434,13 +528,23 @@ void airport_objects(const FlightgearImportOptions& o, const AptAirport& a, cons
     const RunwayFrame f(lr.ends[0].point, lr.ends[1].point, rw.width_m);
     const RunwayPolygons rp = build_runway(rw, f, ground, 0);
     const std::string name = "runway_" + rw.ends[0].id + "_" + rw.ends[1].id;
-    objects.push_back({{"name", name}, {"layer", kRunwayLayer},
-                       {"subobjects", json::array({soup_subobject("markings", rp.markings), soup_subobject("surface", rp.surface)})}});
+    objects.push_back({{"name", name},
+                       {"layer", kRunwayLayer},
+                       {"subobjects", json::array({soup_subobject("markings", rp.markings),
+                                                   soup_subobject("surface", rp.surface)})}});
     parts.marking_polygons += rp.marking_polygons;
-    parts.runways.push_back({{"name", rw.ends[0].id + "/" + rw.ends[1].id}, {"length_m", round_mm(f.length)},
-                             {"width_m", rw.width_m}, {"heading_deg", round_mm(f.heading_deg())},
-                             {"marking_polygons", rp.marking_polygons}, {"surface_polygons", rp.surface.polygons.size()}});
-    for (const AirportLight& l : runway_lights(lr)) lights.push_back(l);
+    parts.runways.push_back({{"name", rw.ends[0].id + "/" + rw.ends[1].id},
+                             {"length_m", round_mm(f.length)},
+                             {"width_m", rw.width_m},
+                             {"heading_deg", round_mm(f.heading_deg())},
+                             {"marking_polygons", rp.marking_polygons},
+                             {"surface_polygons", rp.surface.polygons.size()}});
+    std::vector<AirportLight> own = runway_lights(lr);
+    // Where runways cross, the shorter one's edge rows break on the longer one's pavement.
+    for (const AptRunway& other : a.runways)
+      if (&other != &rw && runway_length(other, frame) > f.length)
+        parts.edge_lights_removed += remove_edge_lights_on(own, light_runway(other, frame));
+    lights.insert(lights.end(), own.begin(), own.end());
     if (r == approach.runway) {
       parts.keyframes = approach_keyframes(o, f, rp, rw, approach.end, parts.frames);
       parts.approach_end = rw.ends[approach.end].id;
@@ -459,20 +563,32 @@ void airport_objects(const FlightgearImportOptions& o, const AptAirport& a, cons
     for (const AirportLight& u : units) lights.push_back(u);
   }
   add_light_objects(lights, ground, 0, objects, parts.lights_by_type);
+  parts.terragear_check = terragear_light_check(lights, mesh);
 }
 
 json terrain_statistics(const Sources& s, const TerrainCounts& tc) {
-  return {{"files", s.terrain.files},       {"triangles_read", s.terrain.triangles_read},
-          {"triangles_outside_radius", s.terrain.triangles_outside}, {"triangles_degenerate", s.terrain.degenerate + tc.dropped},
-          {"triangles", tc.triangles},      {"painted_line_triangles", tc.line_triangles},
-          {"cells", tc.cells},              {"by_material", tc.by_material},
+  return {{"files", s.terrain.files},
+          {"ocean_tiles", s.terrain.ocean_tiles},
+          {"triangles_read", s.terrain.triangles_read},
+          {"triangles_outside_radius", s.terrain.triangles_outside},
+          {"triangles_degenerate", s.terrain.degenerate + tc.dropped},
+          {"triangles", tc.triangles},
+          {"painted_line_triangles", tc.line_triangles},
+          {"cells", tc.cells},
+          {"by_material", tc.by_material},
           {"unknown_materials", tc.unknown_materials}};
 }
 
 json object_statistics(const Sources& s, const ObjectCounts& oc) {
-  return {{"placed_in_stg", s.stg.objects.size()}, {"objects", oc.placed},        {"outside_radius", oc.outside},
-          {"model_missing", oc.missing},           {"model_refused", oc.refused}, {"distinct_models", oc.distinct_models},
-          {"model_faces", oc.polygons},            {"signs_skipped", s.stg.signs}, {"refusals", oc.refusals}};
+  return {{"placed_in_stg", s.stg.objects.size()},
+          {"objects", oc.placed},
+          {"outside_radius", oc.outside},
+          {"model_missing", oc.missing},
+          {"model_refused", oc.refused},
+          {"distinct_models", oc.distinct_models},
+          {"model_faces", oc.polygons},
+          {"signs_skipped", s.stg.signs},
+          {"refusals", oc.refusals}};
 }
 
 }  // namespace
@@ -481,7 +597,9 @@ FlightgearImport import_flightgear(const FlightgearImportOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string apt_file = (fs::path(o.fg_root) / "Airports" / "apt.dat.gz").string();
   if (!fs::is_regular_file(apt_file))
-    throw InputError(apt_file, "", "not found: fetch FlightGear's data with tools/fetch_flightgear.sh (docs/flightgear.md) or name it with --fg-root");
+    throw InputError(
+        apt_file, "",
+        "not found: fetch FlightGear's data with tools/fetch_flightgear.sh (docs/flightgear.md) or name it with --fg-root");
   const AptAirport a = read_apt_dat(apt_file, o.icao);
   const double apt_ms = elapsed_ms(t0);
   Geodetic arp{0, 0, a.elevation_ft * kFeet};
@@ -489,7 +607,9 @@ FlightgearImport import_flightgear(const FlightgearImportOptions& o) {
     arp.lat_deg = a.datum_lat_deg, arp.lon_deg = a.datum_lon_deg;
   } else {  // the runway ends' centroid
     for (const AptRunway& r : a.runways)
-      for (const AptRunwayEnd& e : r.ends) arp.lat_deg += e.lat_deg / double(2 * a.runways.size()), arp.lon_deg += e.lon_deg / double(2 * a.runways.size());
+      for (const AptRunwayEnd& e : r.ends)
+        arp.lat_deg += e.lat_deg / double(2 * a.runways.size()),
+            arp.lon_deg += e.lon_deg / double(2 * a.runways.size());
   }
   const LocalFrame frame(arp);
   const ApproachEnd approach = choose_approach(a, frame, o.approach, apt_file);
@@ -499,15 +619,17 @@ FlightgearImport import_flightgear(const FlightgearImportOptions& o) {
   TerrainCounts tc;
   json objects = terrain_objects(src.terrain, o.radius_m, o.terrain_cell_m, tc);
   AirportParts parts;
-  airport_objects(o, a, frame, ground, approach, objects, parts);
+  airport_objects(o, a, frame, ground, src.terrain, approach, objects, parts);
   const auto t_obj = std::chrono::steady_clock::now();
   ObjectCounts oc;
   if (o.objects)
-    for (json& j : stg_objects(src.stg.objects, frame, o.radius_m, o.max_model_seconds, oc)) objects.push_back(std::move(j));
+    for (json& j : stg_objects(src.stg.objects, frame, o.radius_m, o.max_model_seconds, oc))
+      objects.push_back(std::move(j));
   FlightgearImport out;
   json& scene = out.scene;
   scene = {{"format", "cig-scene"}, {"version", 1}};
-  scene["name"] = a.icao + " " + a.name + ": ILS approach runway " + parts.approach_end + " at " + time_name(o.time) + " (FlightGear data)";
+  scene["name"] = a.icao + " " + a.name + ": ILS approach runway " + parts.approach_end + " at " + time_name(o.time) +
+                  " (FlightGear data)";
   scene["raster"] = o.raster;
   scene["view"] = {{"near", 1.0}, {"light_point_min_diameter", 3}};
   scene["channels"] = json::array({{{"name", "left"}, {"yaw", -40}, {"pitch", 0}, {"fov", 40}},
@@ -519,19 +641,30 @@ FlightgearImport import_flightgear(const FlightgearImportOptions& o) {
   std::size_t lights = 0;
   for (const auto& kv : parts.lights_by_type) lights += kv.second;
   json& st = out.statistics;
-  st["airport"] = {{"icao", a.icao}, {"name", a.name}, {"elevation_m", round_mm(a.elevation_ft * kFeet)},
-                   {"reference_point", {{"lat", arp.lat_deg}, {"lon", arp.lon_deg}}}, {"datum_given", a.has_datum}};
+  st["airport"] = {{"icao", a.icao},
+                   {"name", a.name},
+                   {"elevation_m", round_mm(a.elevation_ft * kFeet)},
+                   {"reference_point", {{"lat", arp.lat_deg}, {"lon", arp.lon_deg}}},
+                   {"datum_given", a.has_datum}};
   st["radius_km"] = o.radius_m / 1000;
   st["tiles"] = src.tiles;
   st["terrain"] = terrain_statistics(src, tc);
   st["objects"] = object_statistics(src, oc);
   st["runways"] = parts.runways;
   st["marking_polygons"] = parts.marking_polygons;
-  st["light_points"] = {{"total", lights}, {"by_type", parts.lights_by_type}, {"light_objects_skipped", parts.light_objects_skipped}};
-  st["approach"] = {{"runway", parts.approach_end}, {"heading_deg", round_mm(parts.approach_heading)}, {"frames", parts.frames},
-                    {"frame_rate", o.frame_rate}, {"from_nm", o.from_nm}, {"to_nm", o.to_nm}, {"time", time_name(o.time)}};
-  st["ms"] = {{"apt_dat", round_mm(apt_ms)}, {"terrain_read", round_mm(terrain_read_ms)},
-              {"objects", round_mm(elapsed_ms(t_obj))}, {"total", round_mm(elapsed_ms(t0))}};
+  st["light_points"] = {{"total", lights},
+                        {"by_type", parts.lights_by_type},
+                        {"light_objects_skipped", parts.light_objects_skipped},
+                        {"edge_lights_removed_at_crossings", parts.edge_lights_removed},
+                        {"terragear_check", parts.terragear_check}};
+  st["approach"] = {{"runway", parts.approach_end}, {"heading_deg", round_mm(parts.approach_heading)},
+                    {"frames", parts.frames},       {"frame_rate", o.frame_rate},
+                    {"from_nm", o.from_nm},         {"to_nm", o.to_nm},
+                    {"time", time_name(o.time)}};
+  st["ms"] = {{"apt_dat", round_mm(apt_ms)},
+              {"terrain_read", round_mm(terrain_read_ms)},
+              {"objects", round_mm(elapsed_ms(t_obj))},
+              {"total", round_mm(elapsed_ms(t0))}};
   return out;
 }
 
@@ -545,27 +678,35 @@ std::string import_summary_text(const json& st) {
   const json& ob = st["objects"];
   s << "airport     " << st["airport"]["icao"].get<std::string>() << " " << st["airport"]["name"].get<std::string>()
     << ", radius " << st["radius_km"].get<double>() << " km\n";
-  s << "tiles       " << st["tiles"].size() << " (" << t["files"].get<std::size_t>() << " BTG files)\n";
-  s << "terrain     " << t["triangles"].get<std::size_t>() << " triangles in " << t["cells"].get<std::size_t>() << " cells ("
-    << t["triangles_read"].get<std::size_t>() << " read, " << t["triangles_outside_radius"].get<std::size_t>() << " outside the radius, "
-    << t["triangles_degenerate"].get<std::size_t>() << " degenerate; " << t["unknown_materials"].size() << " unknown materials)\n";
-  s << "objects     " << ob["objects"].get<std::size_t>() << " placed (" << ob["distinct_models"].get<std::size_t>() << " models, "
-    << ob["model_faces"].get<std::size_t>() << " faces); " << ob["outside_radius"].get<std::size_t>() << " outside the radius, "
-    << ob["model_missing"].get<std::size_t>() << " missing, " << ob["model_refused"].get<std::size_t>() << " refused, "
-    << ob["signs_skipped"].get<std::size_t>() << " signs skipped\n";
+  s << "tiles       " << st["tiles"].size() << " (" << t["files"].get<std::size_t>() << " BTG files) and "
+    << t["ocean_tiles"].get<std::size_t>() << " of open sea\n";
+  s << "terrain     " << t["triangles"].get<std::size_t>() << " triangles in " << t["cells"].get<std::size_t>()
+    << " cells (" << t["triangles_read"].get<std::size_t>() << " read, "
+    << t["triangles_outside_radius"].get<std::size_t>() << " outside the radius, "
+    << t["triangles_degenerate"].get<std::size_t>() << " degenerate; " << t["unknown_materials"].size()
+    << " unknown materials)\n";
+  s << "objects     " << ob["objects"].get<std::size_t>() << " placed (" << ob["distinct_models"].get<std::size_t>()
+    << " models, " << ob["model_faces"].get<std::size_t>() << " faces); " << ob["outside_radius"].get<std::size_t>()
+    << " outside the radius, " << ob["model_missing"].get<std::size_t>() << " missing, "
+    << ob["model_refused"].get<std::size_t>() << " refused, " << ob["signs_skipped"].get<std::size_t>()
+    << " signs skipped\n";
   s << "runways     " << st["runways"].size() << ":";
   for (const json& r : st["runways"])
-    s << " " << r["name"].get<std::string>() << " (" << r["length_m"].get<double>() << " x " << r["width_m"].get<double>() << " m)";
+    s << " " << r["name"].get<std::string>() << " (" << r["length_m"].get<double>() << " x "
+      << r["width_m"].get<double>() << " m)";
   s << ", " << st["marking_polygons"].get<std::size_t>() << " marking polygons\n";
   s << "lights      " << st["light_points"]["total"].get<std::size_t>() << ":";
-  for (const auto& kv : st["light_points"]["by_type"].items()) s << " " << kv.key() << " " << kv.value().get<std::size_t>();
-  s << "; " << st["light_points"]["light_objects_skipped"].get<std::size_t>() << " light objects skipped (wig-wags, ...)\n";
+  for (const auto& kv : st["light_points"]["by_type"].items())
+    s << " " << kv.key() << " " << kv.value().get<std::size_t>();
+  s << "; " << st["light_points"]["light_objects_skipped"].get<std::size_t>()
+    << " light objects skipped (wig-wags, ...)\n";
   const json& ap = st["approach"];
-  s << "approach    runway " << ap["runway"].get<std::string>() << " (heading " << ap["heading_deg"].get<double>() << "), "
-    << ap["frames"].get<std::size_t>() << " frames at " << ap["frame_rate"].get<double>() << " Hz from " << ap["from_nm"].get<double>()
-    << " NM, " << ap["time"].get<std::string>() << "\n";
-  s << "time        " << st["ms"]["total"].get<double>() << " ms (apt.dat " << st["ms"]["apt_dat"].get<double>() << ", terrain "
-    << st["ms"]["terrain_read"].get<double>() << ", objects " << st["ms"]["objects"].get<double>() << ")\n";
+  s << "approach    runway " << ap["runway"].get<std::string>() << " (heading " << ap["heading_deg"].get<double>()
+    << "), " << ap["frames"].get<std::size_t>() << " frames at " << ap["frame_rate"].get<double>() << " Hz from "
+    << ap["from_nm"].get<double>() << " NM, " << ap["time"].get<std::string>() << "\n";
+  s << "time        " << st["ms"]["total"].get<double>() << " ms (apt.dat " << st["ms"]["apt_dat"].get<double>()
+    << ", terrain " << st["ms"]["terrain_read"].get<double>() << ", objects " << st["ms"]["objects"].get<double>()
+    << ")\n";
   return s.str();
 }
 

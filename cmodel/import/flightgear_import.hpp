@@ -17,11 +17,11 @@ enum class TimeOfDay { day, dusk, night };
 
 struct FlightgearImportOptions {
   std::string icao;
-  std::string fg_root;  // the data folder: Airports/apt.dat.gz, Scenery/{Terrain,Objects,Models}
+  std::string fg_root;     // the data folder: Airports/apt.dat.gz, Scenery/{Terrain,Objects,Models}
   std::string scene_file;  // where the scene will be written: model paths are made relative to its folder
   double radius_m = 20000;
   double terrain_cell_m = 2000;  // terrain is cut into square objects of this size (culling units)
-  std::string approach;  // runway end ("11"); "": the longest runway's end with the most approach lights
+  std::string approach;          // runway end ("11"); "": the longest runway's end with the most approach lights
   TimeOfDay time = TimeOfDay::dusk;
   double glide_slope_deg = 3;
   double from_nm = 10, to_nm = 0;  // the approach from this distance to the glide path's ground point

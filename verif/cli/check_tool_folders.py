@@ -7,6 +7,7 @@ exit status 2, the message, and that the folder is unchanged afterwards.
   configure_file        tools/configure.sh on an existing file
   synth_user_file       tools/synth_report.sh on a folder holding a report.txt it did not write
   synth_home            tools/synth_report.sh on $HOME (a temporary folder)
+  fetch_user_folder     tools/fetch_flightgear.sh with CIG_FLIGHTGEAR_CACHE on a folder it did not make
 
 usage: check_tool_folders.py SOURCE WORK CASE   (WORK: a scratch folder outside SOURCE)"""
 import os
@@ -37,6 +38,9 @@ def main():
     elif case == "synth_home":
         env["HOME"] = user
         cmd, message = [synth, user, "pe_mid"], f"{user}: is your home folder"
+    elif case == "fetch_user_folder":
+        env["CIG_FLIGHTGEAR_CACHE"] = user
+        cmd, message = [os.path.join(source, "tools", "fetch_flightgear.sh")], f"{user}: not empty and not made by this script"
     else:
         fail("unknown case " + case)
     before = snapshot(work)
