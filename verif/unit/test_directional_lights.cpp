@@ -9,6 +9,7 @@
 //    degrees shows 0, 2 and 4 white units, unit by unit as the eye's elevation from each unit
 //    (computed here from the geometry) says, also with the PAPI's object pitched (the transition
 //    is measured against the world horizontal);
+//  * scenes/small/papi.json: red PAPI at its first frame, white at its last;
 //  * every engine that draws light points shows the PAPI's red and white units and the beamed
 //    light at their centres, and background where the light whose beam points away would be, as
 //    the float reference does.
@@ -200,6 +201,27 @@ TEST(DirectionalLights, PapiShowsWhiteAboveEachUnitsTransition) {
       EXPECT_EQ(white, expected_white[i]);
       EXPECT_EQ(report["geometry"]["light_points_outside_beam"].get<int>(), 0);
     }
+  }
+}
+
+// scenes/small/papi.json as scenes/README.md describes it: the PAPI's four units red at frame 0
+// (2.05 degrees) and white at frame 9 (4.1), and the other end's threshold and end lights and the
+// edge lights aimed the other way (56) never listed.
+TEST(DirectionalLights, ShippedPapiSceneIsWhatTheReadmeSays) {
+  const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/small/papi.json");
+  const ImageGenerator generator(scene);
+  for (int frame : {0, 9}) {
+    SCOPED_TRACE("frame " + std::to_string(frame));
+    json report;
+    const ScreenFrame f = generator.geometry(frame, 0, report);
+    const auto count = [&](const Rgb& c) {
+      return std::count_if(f.light_points.begin(), f.light_points.end(),
+                           [&](const ScreenLightPoint& l) { return l.colour == c; });
+    };
+    EXPECT_EQ(count(Rgb(1, 1, 1)), frame == 0 ? 0 : 4);
+    EXPECT_EQ(count(Rgb(1, 0.05, 0.02)), frame == 0 ? 4 : 0);
+    EXPECT_EQ(report["geometry"]["light_points_outside_beam"].get<int>(), 56);
+    EXPECT_EQ(report["geometry"]["light_points_out"].get<int>(), 60);
   }
 }
 
