@@ -58,6 +58,7 @@ nlohmann::ordered_json geometry_report(const GeometryStats& gs) {
           {"vertices_out", gs.vertices_out},
           {"light_points_in", gs.light_points_in},
           {"light_points_out", gs.light_points_out},
+          {"light_points_outside_beam", gs.light_points_outside_beam},
           {"priority_trees",
            {{"subobjects", gs.bsp_subobjects},
             {"nodes_visited", gs.bsp.nodes},

@@ -68,6 +68,26 @@ PriorityWalkCost walk_priority_tree(const std::vector<BspNode>& tree, const Worl
 
 namespace {
 
+// A directional light seen from the eye, d = eye - light (world): the factor its intensity is
+// multiplied by (0: the eye lies outside its beam) and, in `colour`, the colour it shows.
+// * below: a PAPI (or VASI) unit shows white above its transition angle and red below it, the
+//   angle measured against the world horizontal: below when d.z < sin(transition) |d|, no trigonometry.
+// * beam: the isocandela ellipse of ICAO Annex 14 Vol I, Appendix 2 (runway edge, threshold, end
+//   and approach lights): f = 1 - (da/h)^2 - (de/v)^2 for the eye's azimuth and elevation off the
+//   axis in the object's horizontal frame. The eye outside the rectangle |da| < h, |de| < v is
+//   rejected by dot products (cos da > cos h and the elevation bounds' sines, precomputed by the
+//   world database); inside it the lobe needs the two angles.
+double directional_light(const WorldLightDirection& w, const glm::dvec3& d, Rgb& colour) {
+  if (w.below && d.z < w.sin_below * glm::length(d)) colour = w.below_colour;
+  if (!w.beam) return 1;
+  const double x = glm::dot(d, w.right), y = glm::dot(d, w.along), z = glm::dot(d, w.up);
+  const double r = std::sqrt(x * x + y * y);  // the horizontal distance: z = |d| sin el, r = |d| cos el
+  if (y < w.cos_horizontal * r || z * w.cos_lo - r * w.sin_lo < 0 || r * w.sin_hi - z * w.cos_hi < 0) return 0;
+  const double da = std::atan2(x, y) / w.horizontal;  // in [-pi, pi]: the azimuth off the axis, wrapped
+  const double de = (std::atan2(z, r) - w.elevation) / w.vertical;
+  return std::max(0.0, 1 - da * da - de * de);
+}
+
 // One channel's stage-B state: the view, its pyramid, and the list being built.
 struct ChannelGeometry {
   const ChannelView& view;
@@ -82,20 +102,31 @@ struct ChannelGeometry {
 
   // Light points first: they take priority over their own object's surfaces (a runway light over
   // the runway) but not over nearer objects, which come earlier in the list.
+  // Directional lights (beam, below) are decided here, as a real CIG's light-point processor does,
+  // so every engine gets them through the list: a light whose beam misses the eye is not listed.
   void light_points(const Object& object, const WorldObject& wobject) {
     stats.light_points_in += object.light_points.size();
+    std::size_t next = 0;  // the next of the object's directional lights
     for (std::size_t i = 0; i < object.light_points.size(); ++i) {
+      const WorldLightDirection* dir = nullptr;
+      if (next < wobject.light_directions.size() && wobject.light_directions[next].light == i)
+        dir = &wobject.light_directions[next++];
       const glm::dvec3 e = view.to_eye(wobject.light_positions[i]);
       if (pyramid.outcode(e)) continue;  // kept when the centre is inside the pyramid
       const LightPoint& lp = object.light_points[i];
-      const ScreenVertex c = project(e, lp.intensity, tan_half_fov);
       ScreenLightPoint s;
+      s.colour = lp.colour;
+      double f = 1;
+      if (dir && !((f = directional_light(*dir, view.eye - wobject.light_positions[i], s.colour)) > 0)) {
+        ++stats.light_points_outside_beam;
+        continue;
+      }
+      const ScreenVertex c = project(e, lp.intensity, tan_half_fov);
       s.xs = c.xs;
       s.ys = c.ys;
       s.zs = c.zs;
       s.ds = std::min(1.0, std::max(min_ds, lp.diameter / (tan_half_fov * e.z)));
-      s.colour = lp.colour;
-      s.intensity = lp.intensity;
+      s.intensity = lp.intensity * f;
       s.priority = std::int32_t(out.polygons.size());
       out.light_points.push_back(s);
     }

@@ -37,6 +37,7 @@ struct GeometryStats {
   std::uint64_t polygons_out = 0;
   std::uint64_t vertices_out = 0;
   std::uint64_t light_points_in = 0, light_points_out = 0;
+  std::uint64_t light_points_outside_beam = 0;  // inside the pyramid, but the eye lies outside their beam
   // Priority trees walked (scene/priority_compiler.hpp): subobjects, nodes visited, and the walk's
   // operations in seed 000's units (walk_priority_tree counts them).
   std::uint64_t bsp_subobjects = 0;

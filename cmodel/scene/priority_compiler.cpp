@@ -643,6 +643,7 @@ Object merge_group(const Scene& scene, const std::vector<std::size_t>& members, 
     }
     for (LightPoint l : o.light_points) {
       l.position = rot * l.position + shift;
+      if (l.beam) l.beam->frame = rot * l.beam->frame;  // the group has no rotation: the lobe keeps the member's
       g.light_points.push_back(l);
     }
   }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ constexpr double kMaxAngleDeg = 360;                           // heading, roll 
 constexpr double kMinNear = 1e-3, kMaxNear = 1e4;              // near plane distance, metres
 constexpr double kMaxDistance = 1e9;                           // fog start and end, bounding-sphere radius, metres
 constexpr double kMaxLightDiameter = 1e5;                      // light-point diameter, metres
+constexpr double kMaxLobeHalfWidthDeg = 180;                   // a directional light's lobe half-widths, (0, 180]
 // Screen depths of a polygon list: what the geometric processor can produce from the ranges above.
 constexpr double kMinScreenDepth = kMinNear, kMaxScreenDepth = kMaxDistance;
 // Polygon lists (cig-polys) may hold any depth the formatter can meet and more: from below the
@@ -138,11 +140,36 @@ struct Polyhedron {
   bool reoriented = false;  // the polygons wound inward and were reversed at load
 };
 
+// A directional light's lobe ("beam"): seen from the eye at azimuth da and elevation de off the
+// beam axis (both measured in the object's horizontal frame), the light's intensity is multiplied
+// by f = max(0, 1 - (da/h)^2 - (de/v)^2), an elliptical lobe as the isocandela ellipses of ICAO
+// Annex 14 Vol I, Appendix 2 give runway edge, threshold, end and approach lights.
+struct LightBeam {
+  // The axis' azimuth frame in object coordinates, as columns: x to the right of the axis' azimuth,
+  // y along it (horizontal), z the object's up. Built from `heading` at load; objects merged into
+  // an occlusion group and the world database rotate it with the object's pose.
+  glm::dmat3 frame{1.0};
+  double heading_deg = 0;     // the axis' azimuth, clockwise from the object's +y (as given)
+  double elevation_deg = 0;   // the axis' elevation above the object's horizontal, [-90, 90]
+  double horizontal_deg = 1;  // half-widths of the lobe, (0, 180]
+  double vertical_deg = 1;
+};
+
+// A light whose colour changes with the eye's elevation seen from it (a PAPI or VASI unit: white
+// above its transition angle, red below): `colour` below `elevation_deg` (world horizontal).
+struct LightBelow {
+  double elevation_deg = 0;  // [-90, 90]
+  Rgb colour{1, 0, 0};
+};
+
 struct LightPoint {
   glm::dvec3 position{0};  // object coordinates
   double diameter = 1;     // metres
   Rgb colour{1, 1, 1};
   double intensity = 1;  // [0, 1]
+  // Directional lights (both optional, independent): without them the light is omnidirectional.
+  std::optional<LightBeam> beam;
+  std::optional<LightBelow> below;
 };
 
 struct Pose {

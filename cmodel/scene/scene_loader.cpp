@@ -221,14 +221,45 @@ Subobject read_subobject(const JsonNode& n, const std::string& scene_file, const
   return s;
 }
 
+// A half-width of a light's lobe: (0, 180] degrees.
+double read_half_width(const JsonNode& n) {
+  const double v = n.number(0, kMaxLobeHalfWidthDeg);
+  if (!(v > 0)) n.fail("beam half-width must be positive");
+  return v;
+}
+
+// A directional light's lobe: the axis (heading as a pose's, elevation above the object's
+// horizontal, both default 0) and the half-widths of its ellipse (required).
+LightBeam read_light_beam(const JsonNode& n) {
+  n.allow_only({"heading", "elevation", "horizontal", "vertical"});
+  LightBeam b;
+  b.heading_deg = read_angle(n, "heading");
+  b.elevation_deg = n.find("elevation") ? n.at("elevation").number(-90, 90) : 0.0;
+  b.horizontal_deg = read_half_width(n.at("horizontal"));
+  b.vertical_deg = read_half_width(n.at("vertical"));
+  b.frame = body_to_world(b.heading_deg, 0, 0);  // right, along the azimuth, up
+  return b;
+}
+
+// A PAPI/VASI unit's colour below its transition angle (both required).
+LightBelow read_light_below(const JsonNode& n) {
+  n.allow_only({"elevation", "colour"});
+  LightBelow b;
+  b.elevation_deg = n.at("elevation").number(-90, 90);
+  b.colour = n.at("colour").colour();
+  return b;
+}
+
 LightPoint read_light_point(const JsonNode& n) {
-  n.allow_only({"position", "diameter", "colour", "intensity"});
+  n.allow_only({"position", "diameter", "colour", "intensity", "beam", "below"});
   LightPoint l;
   l.position = read_point(n.at("position"));
   l.diameter = n.at("diameter").number(0, kMaxLightDiameter);
   if (!(l.diameter > 0)) n.at("diameter").fail("light-point diameter must be positive");
   if (auto c = n.find("colour")) l.colour = c->colour();
   if (auto i = n.find("intensity")) l.intensity = i->number(0, 1);
+  if (auto b = n.find("beam")) l.beam = read_light_beam(*b);
+  if (auto b = n.find("below")) l.below = read_light_below(*b);
   return l;
 }
 

@@ -70,6 +70,37 @@ WorldSubobject place_subobject(const Subobject& s, const glm::dmat3& rot, const 
   return w;
 }
 
+// A directional light placed by its object's rotation: the lobe's frame in the world and the
+// bounds of its (azimuth, elevation) rectangle as sines and cosines, the transition's sine. A bound
+// past the zenith or the nadir, or a half-width of 180 degrees, is one no direction breaks.
+WorldLightDirection place_light_direction(const LightPoint& l, std::uint32_t index, const glm::dmat3& rot) {
+  WorldLightDirection w;
+  w.light = index;
+  if (l.beam) {
+    const LightBeam& b = *l.beam;
+    const glm::dmat3 frame = rot * b.frame;
+    w.beam = true;
+    w.right = frame[0];
+    w.along = frame[1];
+    w.up = frame[2];
+    w.elevation = glm::radians(b.elevation_deg);
+    w.horizontal = glm::radians(b.horizontal_deg);
+    w.vertical = glm::radians(b.vertical_deg);
+    w.cos_horizontal = b.horizontal_deg >= 180 ? -1.0 : std::cos(w.horizontal);
+    const double lo = b.elevation_deg - b.vertical_deg, hi = b.elevation_deg + b.vertical_deg;
+    w.sin_lo = lo <= -90 ? -1.0 : std::sin(glm::radians(lo));
+    w.cos_lo = lo <= -90 ? 0.0 : std::cos(glm::radians(lo));
+    w.sin_hi = hi >= 90 ? 1.0 : std::sin(glm::radians(hi));
+    w.cos_hi = hi >= 90 ? 0.0 : std::cos(glm::radians(hi));
+  }
+  if (l.below) {
+    w.below = true;
+    w.sin_below = std::sin(glm::radians(l.below->elevation_deg));
+    w.below_colour = l.below->colour;
+  }
+  return w;
+}
+
 }  // namespace
 
 WorldDatabase build_world_database(const Scene& scene) {
@@ -79,7 +110,11 @@ WorldDatabase build_world_database(const Scene& scene) {
     WorldObject w;
     glm::dmat3 rot = body_to_world(o.pose.heading_deg, o.pose.pitch_deg, o.pose.roll_deg);
     for (const auto& s : o.subobjects) w.subobjects.push_back(place_subobject(s, rot, o.pose.position, scene.lighting));
-    for (const auto& l : o.light_points) w.light_positions.push_back(rot * l.position + o.pose.position);
+    for (std::uint32_t i = 0; i < o.light_points.size(); ++i) {
+      const LightPoint& l = o.light_points[i];
+      w.light_positions.push_back(rot * l.position + o.pose.position);
+      if (l.beam || l.below) w.light_directions.push_back(place_light_direction(l, i, rot));
+    }
     w.centre = rot * o.sphere_centre + o.pose.position;
     w.radius = o.sphere_radius;
     w.layer = o.layer;

@@ -24,9 +24,28 @@ struct WorldSubobject {
   double radius = 0;
 };
 
+// What stage B needs of a directional light (LightPoint::beam, ::below), placed in the world once
+// at load, so that a frame costs a few dot products per such light and angles only inside the
+// lobe's bounds.
+struct WorldLightDirection {
+  std::uint32_t light = 0;  // its index in the object's light points
+  bool beam = false, below = false;
+  // The lobe: the axis' azimuth frame in world coordinates (right, along, up: the object's
+  // horizontal placed by its pose), the axis' elevation and the half-widths (radians), and the
+  // bounds of the rectangle of (azimuth, elevation) that holds the lobe, as sines and cosines:
+  // |da| < h is cos(da) > cos h, and lo < el < hi is sin(el - lo) > 0 and sin(hi - el) > 0.
+  glm::dvec3 right{1, 0, 0}, along{0, 1, 0}, up{0, 0, 1};
+  double elevation = 0, horizontal = 1, vertical = 1;
+  double cos_horizontal = 0, sin_lo = -1, cos_lo = 0, sin_hi = 1, cos_hi = 0;
+  // The transition: the eye is below it when (eye - light).z < sin_below |eye - light| (world z).
+  double sin_below = 0;
+  Rgb below_colour{1, 0, 0};
+};
+
 struct WorldObject {
   std::vector<WorldSubobject> subobjects;
-  std::vector<glm::dvec3> light_positions;  // world
+  std::vector<glm::dvec3> light_positions;            // world
+  std::vector<WorldLightDirection> light_directions;  // the directional lights only, by index
   glm::dvec3 centre{0};
   double radius = 0;
   int layer = 0;
