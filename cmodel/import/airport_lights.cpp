@@ -171,9 +171,9 @@ glm::dvec2 unit_of_heading(double heading_deg) {
 }
 
 // A beam along `axis` (horizontal), turned by the spec's toe-in toward `inward` (zero: none).
-LightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s, double elevation_deg) {
+AirportLightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s, double elevation_deg) {
   const double t = s.toe_in_deg * kPi / 180;
-  LightBeam b;
+  AirportLightBeam b;
   b.directional = true;
   b.heading_deg = heading_of(axis * std::cos(t) + inward * std::sin(t));
   b.elevation_deg = elevation_deg;
@@ -181,10 +181,10 @@ LightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s, double elev
   b.vertical_deg = s.vertical_deg;
   return b;
 }
-LightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s) { return aim(axis, inward, s, s.elevation_deg); }
+AirportLightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s) { return aim(axis, inward, s, s.elevation_deg); }
 
 AirportLight make_light(AirportLightType type, const std::string& end, glm::dvec2 p, double z, const Rgb& colour,
-                        double intensity, const LightBeam& beam) {
+                        double intensity, const AirportLightBeam& beam) {
   AirportLight l;
   l.type = type;
   l.runway_end = end;
@@ -381,7 +381,7 @@ void add_reil(const Runway& r, const Approach& a, std::vector<AirportLight>& out
   if (a.end->reil == 0) return;
   for (int side : {1, -1}) {
     const double y = side * (r.width_m / 2 + kReilOutsideEdgeM);
-    LightBeam beam;                                                      // omnidirectional (code 1)
+    AirportLightBeam beam;                                                      // omnidirectional (code 1)
     if (a.end->reil == 2) beam = aim(-a.along, a.inward(y), kReilBeam);  // toe-in -15: 15 deg outward
     out.push_back(
         make_light(AirportLightType::reil, a.end->id, a.at(a.threshold, y), kElevatedHeightM, kWhite, 1.0, beam));
@@ -512,8 +512,8 @@ AlsLayout als_layout(int code, double width) {
   }
 }
 
-LightBeam als_beam(const Approach& a, const AlsLight& l) {
-  if (l.part == AlsPart::omni_flasher) return LightBeam{};
+AirportLightBeam als_beam(const Approach& a, const AlsLight& l) {
+  if (l.part == AlsPart::omni_flasher) return AirportLightBeam{};
   if (l.part == AlsPart::side_row) {
     const BeamSpec s{0, kSideRowHalfWidthDeg[0], kSideRowHalfWidthDeg[1], kSideRowToeInDeg};
     return aim(-a.along, a.inward(l.y), s, side_row_elevation_deg(l.d));

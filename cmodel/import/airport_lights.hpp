@@ -37,7 +37,7 @@ const char* to_string(AirportLightType);  // "runway_edge", "threshold", ... (us
 // elevation elevation_deg; the intensity is multiplied by f = max(0, 1 - (da/h)^2 - (de/v)^2), da
 // and de the eye's azimuth and elevation offsets from the axis, h = horizontal_deg and
 // v = vertical_deg the half-widths. Omnidirectional when !directional.
-struct LightBeam {
+struct AirportLightBeam {
   bool directional = false;
   double heading_deg = 0, elevation_deg = 0, horizontal_deg = 180, vertical_deg = 90;
 };
@@ -51,7 +51,7 @@ struct AirportLight {
   Rgb colour{1, 1, 1};           // linear [0, 1]
   double intensity = 1;          // [0, 1], relative (high-intensity edge = 1, medium 0.6, low 0.3 ...)
   double diameter_m = 0.3;
-  LightBeam beam;
+  AirportLightBeam beam;
   bool flashing = false;  // sequenced flashers, RAIL, ODALS, REIL (the scene may show them steady)
   // PAPI/VASI: below the elevation angle below_elevation_deg, seen from the light, the eye sees
   // below_colour instead of colour.
