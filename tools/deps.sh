@@ -20,6 +20,7 @@ test_packages=(
   verilator yosys                 # RTL: lint, Verilated tests and co-simulation, synthesis report
   gtkwave                         # fst2vcd: the co-simulation's trace test reads its FST (cosim.trace)
   gnuplot-nox                     # `cig sweep --plot`: the run-time / error frontier as a PNG
+  python3-skimage                 # scikit-image: the ground truth of the SSIM check (verif/ssim)
   libosmesa6-dev                  # bench_llvmpipe (tools/bench.sh): Mesa's llvmpipe as the benchmark's peer
 )
 case "${1:-all}" in

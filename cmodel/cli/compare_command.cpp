@@ -1,8 +1,8 @@
 // cig compare INPUT --engine E [--reference float|float-snap] [--frame K | --frames A:B]
 //                   [--channel C] [--out DIR [--html]] [--report FILE]
 // Renders INPUT (a scene or a polygon list) with engine E and with the reference, and prints per
-// frame and channel the PSNR, the maximum absolute error per colour channel, the pixels off by
-// more than 2 LSB and the pixels whose polygon id differs; writes difference images (x8) and
+// frame and channel the PSNR, the SSIM (image/ssim.hpp), the maximum absolute error per colour
+// channel, the pixels off by more than 2 LSB and the pixels whose polygon id differs; writes difference images (x8) and
 // side-by-side review images to DIR, and with --html DIR/index.html (review_outputs.hpp).
 #include <algorithm>
 #include <atomic>
@@ -49,9 +49,9 @@ namespace {
 
 void print_row(const Comparison& r) {
   std::cout << std::setw(6) << r.frame << std::setw(4) << r.channel << std::fixed << std::setprecision(2)
-            << std::setw(9) << r.error.psnr() << std::setw(6) << r.error.max_abs[0] << std::setw(5)
-            << r.error.max_abs[1] << std::setw(5) << r.error.max_abs[2] << std::setw(9) << r.error.pixels_over_2lsb
-            << std::setw(11) << r.ids_differ << "\n";
+            << std::setw(9) << r.error.psnr() << std::setw(8) << ssim_text(r.error.ssim()) << std::setw(6)
+            << r.error.max_abs[0] << std::setw(5) << r.error.max_abs[1] << std::setw(5) << r.error.max_abs[2]
+            << std::setw(9) << r.error.pixels_over_2lsb << std::setw(11) << r.ids_differ << "\n";
 }
 
 }  // namespace
@@ -124,9 +124,13 @@ void print_totals(const ComparisonTotals& totals, std::size_t images, bool class
   const ImageError& all = totals.all;
   std::cout << "all:  " << images << " image(s), PSNR " << std::fixed << std::setprecision(2) << all.psnr()
             << " dB over all pixels, lowest " << totals.min_psnr << " dB (frame " << totals.worst_frame << " channel "
-            << totals.worst_channel << "), max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B "
-            << all.max_abs[2] << ", " << all.pixels_over_2lsb << " of " << all.pixels
-            << " pixels off by more than 2 LSB, " << totals.ids_differ << " pixels with another polygon id\n"
+            << totals.worst_channel << "), mean SSIM " << ssim_text(all.ssim());
+  if (all.has_ssim())
+    std::cout << ", lowest " << ssim_text(totals.min_ssim) << " (frame " << totals.worst_ssim_frame << " channel "
+              << totals.worst_ssim_channel << ")";
+  std::cout << ", max abs error R " << all.max_abs[0] << " G " << all.max_abs[1] << " B " << all.max_abs[2] << ", "
+            << all.pixels_over_2lsb << " of " << all.pixels << " pixels off by more than 2 LSB, " << totals.ids_differ
+            << " pixels with another polygon id\n"
             << "      of those, " << totals.ids_differ_off_edges
             << " at an edge in neither image (another surface away from any boundary)\n"
             << "      of those, " << totals.priority.ids_priority_vs_depth
@@ -150,6 +154,8 @@ nlohmann::ordered_json to_json(const ComparisonTotals& totals, double ids_share,
   const ImageError& all = totals.all;
   return {{"psnr_all", all.psnr()},
           {"psnr_min", totals.min_psnr},
+          {"ssim_mean", ssim_json(all.ssim())},
+          {"ssim_min", ssim_json(all.has_ssim() ? totals.min_ssim : all.ssim())},
           {"pixels", all.pixels},
           {"pixels_over_2lsb", all.pixels_over_2lsb},
           {"ids_differ", totals.ids_differ},
@@ -180,7 +186,7 @@ int CompareCommand::run() {
   const std::vector<Comparison> rows = compare_all(*this, jobs, eo, ro, classify);
 
   std::cout << "engine " << engine.engine << " against " << reference << " on " << input << "\n"
-            << " frame  ch     PSNR  maxR maxG maxB  >2 LSB  ids differ\n";
+            << " frame  ch     PSNR    SSIM  maxR maxG maxB  >2 LSB  ids differ\n";
   ComparisonTotals totals;
   nlohmann::ordered_json rep;
   rep["engine"] = engine.engine;

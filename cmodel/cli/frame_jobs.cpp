@@ -1,6 +1,8 @@
 #include "cli/frame_jobs.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "cli/cli_common.hpp"
 #include "cli/output_plan.hpp"
@@ -104,12 +106,24 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
   return {{"frame", c.frame},
           {"channel", c.channel},
           {"psnr", c.error.psnr()},
+          {"ssim", ssim_json(c.error.ssim())},
           {"max_abs", {c.error.max_abs[0], c.error.max_abs[1], c.error.max_abs[2]}},
           {"pixels_over_2lsb", c.error.pixels_over_2lsb},
           {"ids_differ", c.ids_differ},
           {"ids_differ_off_edges", c.ids_differ_off_edges},
           {"ids_priority_vs_depth", c.priority.ids_priority_vs_depth},
           {"pixels_priority_colour", c.priority.pixels_priority_colour}};
+}
+
+std::string ssim_text(double ssim) {
+  if (std::isnan(ssim)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4f", ssim);
+  return buf;
+}
+
+nlohmann::ordered_json ssim_json(double ssim) {
+  return std::isnan(ssim) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(ssim);
 }
 
 void ComparisonTotals::add(const Comparison& c) {
@@ -122,6 +136,11 @@ void ComparisonTotals::add(const Comparison& c) {
     min_psnr = c.error.psnr();
     worst_frame = c.frame;
     worst_channel = c.channel;
+  }
+  if (c.error.has_ssim() && c.error.ssim() < min_ssim) {
+    min_ssim = c.error.ssim();
+    worst_ssim_frame = c.frame;
+    worst_ssim_channel = c.channel;
   }
 }
 

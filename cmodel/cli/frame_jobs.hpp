@@ -1,6 +1,7 @@
 // What `cig compare` and `cig sweep` share: the images they work on (a polygon list, or a scene's
 // frames x channels through stages A and B), the reference they compare with, and the comparison
-// of one image (PSNR, maximum absolute error, pixels off by more than 2 LSB, ids) with its totals.
+// of one image (PSNR, SSIM, maximum absolute error, pixels off by more than 2 LSB, ids) with its
+// totals.
 #pragma once
 
 #include <algorithm>
@@ -74,14 +75,21 @@ Comparison compare_run(int frame, int channel, const RasterImage& got, const Ras
 void attribute_priority(Comparison& c, const RasterImage& got, const RasterImage& reference,
                         const RasterImage& priority_reference);
 nlohmann::ordered_json comparison_json(const Comparison& c);
+// An SSIM as the tables print it (4 decimals) and as the reports hold it; NaN (an image smaller
+// than the window, image/ssim.hpp) is "-" and null.
+std::string ssim_text(double ssim);
+nlohmann::ordered_json ssim_json(double ssim);
 
-// Totals over images: PSNR over all pixels, the lowest image, maximum errors, counts.
+// Totals over images: PSNR over all pixels, the mean SSIM (all.ssim()), the lowest image of each,
+// maximum errors, counts.
 struct ComparisonTotals {
   ImageError all;
   long images = 0, ids_differ = 0, ids_differ_off_edges = 0;
   PriorityAttribution priority;
   double min_psnr = 1e9;
   int worst_frame = 0, worst_channel = 0;
+  double min_ssim = 2;  // of the images that have one (all.has_ssim())
+  int worst_ssim_frame = 0, worst_ssim_channel = 0;
   void add(const Comparison& c);
   int max_abs() const { return std::max({all.max_abs[0], all.max_abs[1], all.max_abs[2]}); }
 };

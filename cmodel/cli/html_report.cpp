@@ -144,11 +144,18 @@ void HtmlPage::table(const std::vector<std::string>& header, const std::vector<s
   body_ << "</table>\n";
 }
 
+namespace {
+
+// Decimals of a report value by its key: an SSIM's 4 (its tables' precision), else 2.
+int decimals_of(const std::string& key) { return key.rfind("ssim", 0) == 0 ? 4 : 2; }
+
+}  // namespace
+
 void HtmlPage::key_values(const nlohmann::ordered_json& object) {
   std::vector<std::vector<HtmlCell>> rows;
   for (auto it = object.begin(); it != object.end(); ++it)
     if (!it.value().is_object() && !(it.value().is_array() && !it.value().empty() && it.value()[0].is_object()))
-      rows.push_back({{it.key(), ""}, {json_cell_text(it.value()), ""}});
+      rows.push_back({{it.key(), ""}, {json_cell_text(it.value(), decimals_of(it.key())), ""}});
   table({}, rows);
 }
 
@@ -159,7 +166,8 @@ void HtmlPage::json_table(const nlohmann::ordered_json& rows) {
   std::vector<std::vector<HtmlCell>> cells;
   for (const auto& r : rows) {
     cells.emplace_back();
-    for (const std::string& key : header) cells.back().push_back({r.contains(key) ? json_cell_text(r[key]) : "", ""});
+    for (const std::string& key : header)
+      cells.back().push_back({r.contains(key) ? json_cell_text(r[key], decimals_of(key)) : "", ""});
   }
   table(header, cells);
 }

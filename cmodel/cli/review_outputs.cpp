@@ -28,9 +28,9 @@ std::string fixed2(double v) {
 std::string comparison_caption(const Comparison& c) {
   const ImageError& e = c.error;
   return "frame " + std::to_string(c.frame) + " channel " + std::to_string(c.channel) + ": PSNR " + fixed2(e.psnr()) +
-         " dB, max |error| R " + std::to_string(e.max_abs[0]) + " G " + std::to_string(e.max_abs[1]) + " B " +
-         std::to_string(e.max_abs[2]) + ", " + std::to_string(e.pixels_over_2lsb) + " px > 2 LSB, " +
-         std::to_string(c.ids_differ) + " ids differ";
+         " dB, SSIM " + ssim_text(e.ssim()) + ", max |error| R " + std::to_string(e.max_abs[0]) + " G " +
+         std::to_string(e.max_abs[1]) + " B " + std::to_string(e.max_abs[2]) + ", " +
+         std::to_string(e.pixels_over_2lsb) + " px > 2 LSB, " + std::to_string(c.ids_differ) + " ids differ";
 }
 
 const char* const kHeatMapLegend =
@@ -149,6 +149,7 @@ void write_compare_html(const std::string& out_dir, const std::string& report_fi
     table.push_back({{std::to_string(c.frame), ""},
                      {std::to_string(c.channel), ""},
                      {fixed2(c.error.psnr()), ""},
+                     {ssim_text(c.error.ssim()), ""},
                      {std::to_string(c.error.max_abs[0]), ""},
                      {std::to_string(c.error.max_abs[1]), ""},
                      {std::to_string(c.error.max_abs[2]), ""},
@@ -158,7 +159,8 @@ void write_compare_html(const std::string& out_dir, const std::string& report_fi
                      {"diff", diff}});
     figures.push_back({side, comparison_caption(c), 768});
   }
-  page.table({"frame", "ch", "PSNR", "max R", "max G", "max B", "> 2 LSB", "ids differ", "side by side", "|error| x 8"},
+  page.table({"frame", "ch", "PSNR", "SSIM", "max R", "max G", "max B", "> 2 LSB", "ids differ", "side by side",
+              "|error| x 8"},
              table);
   page.paragraph(kHeatMapLegend);
   page.figures(figures);

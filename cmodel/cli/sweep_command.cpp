@@ -197,6 +197,8 @@ nlohmann::ordered_json to_json(const SweepRow& r, const FrameJobs& jobs) {
   if (r.has_hardware) j["hardware_ms_per_frame"] = r.hardware_ms / jobs.frames();
   j["psnr"] = e.psnr();
   j["psnr_min"] = r.totals.min_psnr;
+  j["ssim"] = ssim_json(e.ssim());  // the mean over images
+  j["ssim_min"] = ssim_json(e.has_ssim() ? r.totals.min_ssim : e.ssim());
   j["max_abs"] = {e.max_abs[0], e.max_abs[1], e.max_abs[2]};
   j["pixels_over_2lsb"] = e.pixels_over_2lsb;
   j["ids_differ"] = r.totals.ids_differ;

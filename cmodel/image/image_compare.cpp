@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
+
+#include "image/ssim.hpp"
 
 namespace cig {
 
@@ -12,8 +15,14 @@ double ImageError::psnr() const {
   return m == 0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / m);
 }
 
+double ImageError::ssim() const {
+  return has_ssim() ? ssim_sum / double(ssim_images) : std::numeric_limits<double>::quiet_NaN();
+}
+
 void ImageError::add(const ImageError& e) {
   pixels += e.pixels;
+  ssim_sum += e.ssim_sum;
+  ssim_images += e.ssim_images;
   sum_squared += e.sum_squared;
   for (int c = 0; c < 3; ++c) max_abs[c] = std::max(max_abs[c], e.max_abs[c]);
   pixels_over_2lsb += e.pixels_over_2lsb;
@@ -43,6 +52,10 @@ ImageError compare_images(const Image& got, const Image& reference, const IdBuff
       e.sum_squared_ids_differ += sq;
       ++e.pixels_ids_differ;
     }
+  }
+  if (ssim_defined(got.width, got.height)) {
+    e.ssim_sum = ssim(got, reference);
+    e.ssim_images = 1;
   }
   return e;
 }

@@ -1,5 +1,5 @@
-// Image error of an engine against a reference: PSNR, maximum absolute error per colour channel,
-// pixels off by more than 2 LSB, and a difference image.
+// Image error of an engine against a reference: PSNR, SSIM (image/ssim.hpp), maximum absolute error
+// per colour channel, pixels off by more than 2 LSB, and a difference image.
 #pragma once
 
 #include <cstdint>
@@ -17,9 +17,15 @@ struct ImageError {
   // differs (visibility, coverage) against the rest (shading, fog, quantization).
   double sum_squared_ids_differ = 0;
   long pixels_ids_differ = 0;
+  // SSIM summed over the images that have one: those of at least the 11 x 11 window. A smaller
+  // image has none (ssim_images 0), and its other figures stand.
+  double ssim_sum = 0;
+  long ssim_images = 0;
   double mse() const { return pixels ? sum_squared / (3.0 * double(pixels)) : 0; }
-  double psnr() const;            // dB; 99 for identical images
-  void add(const ImageError& e);  // accumulate (for a PSNR over many images)
+  double psnr() const;  // dB; 99 for identical images
+  bool has_ssim() const { return ssim_images > 0; }
+  double ssim() const;            // the mean over images; NaN when none has one
+  void add(const ImageError& e);  // accumulate (for a PSNR over many images, a mean SSIM)
 };
 
 ImageError compare_images(const Image& got, const Image& reference);
