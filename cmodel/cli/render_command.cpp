@@ -110,16 +110,20 @@ std::string write_panorama(const Scene& scene, const std::string& out_dir, int f
 }
 
 // Every frame and channel against the engine's capacities before the first image is written
-// (stages A and B only, and only when the scene could exceed them).
+// (stages A and B only, and only when the scene could exceed them). With rendering pipelines each
+// pipeline's list is held to them: each has its own frame memory and ids (seed 000).
 void check_frames(const Scene& scene, int a, int b, const std::vector<int>& channels, const RasterEngine& checker,
-                  VisibilityArith visibility) {
+                  VisibilityArith visibility, int pipelines) {
   if (!scene_exceeds_ids(scene)) return;
   const ImageGenerator generator(scene, {}, visibility);
   for (int frame = a; frame <= b; ++frame)
     for (int c : channels) {
       nlohmann::ordered_json unused;
       try {
-        checker.check_frame(generator.geometry(frame, c, unused));
+        if (pipelines > 1)
+          for (const ScreenFrame& part : generator.geometry_parts(frame, c, pipelines, unused)) checker.check_frame(part);
+        else
+          checker.check_frame(generator.geometry(frame, c, unused));
       } catch (const InputError& e) {
         throw InputError(scene.file, e.where(), e.rule());  // the scene that makes the frame
       }
@@ -229,7 +233,7 @@ int RenderCommand::run() {
   plan.folder(out_dir, "--out", names);
   plan.file(report_file, "--report");
   plan.check();
-  check_frames(scene, a, b, channels, *probe, manager_unit.arith());
+  check_frames(scene, a, b, channels, *probe, manager_unit.arith(), pipelines);
   std::filesystem::create_directories(out_dir);
 
   // Phase 2: the frames.
