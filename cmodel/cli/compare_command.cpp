@@ -38,6 +38,10 @@ void CompareCommand::add_to(CLI::App& app) {
                   "reference | error map, the largest |error| of R, G, B in bins 0 (grey), 1, 2, 4, ..., 64, 128+ LSB, "
                   "magenta where the polygon id differs (docs/review_outputs.md)");
   sub->add_option("--report", report_file, "write a JSON report (with --html: default DIR/report.json)");
+  sub->add_option("--pipelines", pipelines,
+                  "rendering pipelines per channel (seed 000; scenes, priority engines): the engine renders the "
+                  "lists and merges them, the reference renders them one after another")
+      ->check(CLI::Range(1, 16));
   sub->add_flag("--html", html,
                 "also write DIR/index.html (needs --out): the images, the table, the report, provenance");
   engine.add_to(sub, true);
@@ -87,8 +91,10 @@ std::vector<Comparison> compare_all(const CompareCommand& c, const FrameJobs& jo
       po.params["visibility"] = "priority";
       auto priority_ref = make_engine(reference_engine_name(), po);
       for (std::size_t k; (k = next++) < jobs.size();) {
-        const ScreenFrame f = jobs.screen_frame(k);
-        const EngineRun got = eng->render(f);
+        // With pipelines the engine merges their lists; the reference renders them one after another.
+        const std::vector<ScreenFrame> parts = jobs.screen_frame_parts(k);
+        const ScreenFrame f = parts.size() > 1 ? concatenate_parts(parts) : parts[0];
+        const EngineRun got = parts.size() > 1 ? eng->render_parts(parts) : eng->render(f);
         const EngineRun want = ref->render(f);
         rows[k] = compare_run(jobs.frame(k), jobs.channel(k), got.out, want.out);
         const std::string image =
@@ -172,9 +178,16 @@ int CompareCommand::run() {
   const EngineOptions eo = engine.options();
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = eo.fan_split;  // the reference follows the engine's polygon split
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel,
-                                         model_limit.limits(), manager_unit.arith());
-  jobs.check_capacity(*make_engine(engine.engine, eo));
+  FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
+                                   manager_unit.arith());
+  const auto probe = make_engine(engine.engine, eo);
+  if (pipelines > 1) {
+    if (!jobs.is_scene())
+      throw InputError(input, "--pipelines", "rendering pipelines split a scene's lists; this is a polygon list");
+    probe->check_renders_parts();
+    jobs.set_pipelines(pipelines);
+  }
+  jobs.check_capacity(*probe);
   if (html) prepare_compare_html(out_dir, report_file);
   OutputPlan plan;
   jobs.declare_inputs(plan);
@@ -192,6 +205,7 @@ int CompareCommand::run() {
   rep["engine"] = engine.engine;
   rep["reference"] = reference;
   rep["input"] = input;
+  rep["pipelines"] = pipelines;
   rep["rows"] = nlohmann::ordered_json::array();
   for (const Comparison& r : rows) {
     if (rows.size() <= 30) print_row(r);

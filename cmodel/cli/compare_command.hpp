@@ -14,6 +14,7 @@ struct CompareCommand {
   CLI::App* sub = nullptr;
   std::string input, out_dir, report_file, frames_text, reference = "float";
   int frame_k = -1, channel = -1, reference_spp = 16;
+  int pipelines = 1;  // --pipelines: the engine renders the channel's rendering pipelines and merges them
   bool html = false;  // --html: DIR/index.html
   CLI::Option* frame_opt = nullptr;
   EngineArgs engine;

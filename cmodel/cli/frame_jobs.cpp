@@ -68,6 +68,12 @@ ScreenFrame FrameJobs::screen_frame(std::size_t k) const {
   return generator_->geometry(jobs_[k].first, jobs_[k].second, unused);
 }
 
+std::vector<ScreenFrame> FrameJobs::screen_frame_parts(std::size_t k) const {
+  if (!generator_ || pipelines_ <= 1) return {screen_frame(k)};
+  nlohmann::ordered_json unused;
+  return generator_->geometry_parts(jobs_[k].first, jobs_[k].second, pipelines_, unused);
+}
+
 void FrameJobs::check_capacity(const RasterEngine& engine) const {
   try {
     if (scene_) engine.check_scene(*scene_);
@@ -75,7 +81,8 @@ void FrameJobs::check_capacity(const RasterEngine& engine) const {
       if (!jobs_.empty()) engine.check_raster(scene_->raster);
       return;
     }
-    for (std::size_t k = 0; k < jobs_.size(); ++k) engine.check_frame(screen_frame(k));
+    for (std::size_t k = 0; k < jobs_.size(); ++k)
+      for (const ScreenFrame& part : screen_frame_parts(k)) engine.check_frame(part);
   } catch (const InputError& e) {
     if (!e.file().empty()) throw;
     throw InputError(input_, e.where(), e.rule());  // the input that makes the frame

@@ -46,6 +46,11 @@ class FrameJobs {
   int channels() const { return channels_; }  // channels per frame
   // The polygon list the engines receive for image k (stages A and B for a scene; thread-safe).
   ScreenFrame screen_frame(std::size_t k) const;
+  // With rendering pipelines (set_pipelines, scenes only): image k's list split among them.
+  void set_pipelines(int n) { pipelines_ = n; }
+  bool is_scene() const { return generator_ != nullptr; }
+  int pipelines() const { return pipelines_; }
+  std::vector<ScreenFrame> screen_frame_parts(std::size_t k) const;
   // Every image against the engine's capacities before any work (RasterEngine::check_frame). A
   // scene whose polygons and lights all fit is not run through stages A and B for it.
   void check_capacity(const RasterEngine& engine) const;
@@ -59,6 +64,7 @@ class FrameJobs {
   std::unique_ptr<ImageGenerator> generator_;
   std::vector<std::pair<int, int>> jobs_;  // (frame, channel)
   int frames_ = 1, channels_ = 1;
+  int pipelines_ = 1;
 };
 
 // One image against the reference.

@@ -146,4 +146,19 @@ std::string polygon_list_json(const ScreenFrame& f) {
   return s.str();
 }
 
+ScreenFrame concatenate_parts(const std::vector<ScreenFrame>& parts) {
+  ScreenFrame f = parts.at(0);
+  f.polygons.clear();
+  f.light_points.clear();
+  for (const ScreenFrame& p : parts) {
+    const std::int32_t offset = std::int32_t(f.polygons.size());
+    f.polygons.insert(f.polygons.end(), p.polygons.begin(), p.polygons.end());
+    for (ScreenLightPoint l : p.light_points) {
+      l.priority += offset;
+      f.light_points.push_back(l);
+    }
+  }
+  return f;
+}
+
 }  // namespace cig

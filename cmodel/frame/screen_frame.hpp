@@ -84,5 +84,9 @@ struct ScreenFrame {
 ScreenFrame load_polygon_list(const std::string& file);
 ScreenFrame parse_polygon_list(const std::string& text, const std::string& file);
 std::string polygon_list_json(const ScreenFrame& f);  // "cig-polys" text
+// One list of a channel's rendering-pipeline lists (seed 000) in order: the polygons one after
+// another, each light's priority moved by the polygons before its part. Its polygon indices are
+// those RasterEngine::render_parts gives its ids in, so a reference rendering it compares id for id.
+ScreenFrame concatenate_parts(const std::vector<ScreenFrame>& parts);
 
 }  // namespace cig
