@@ -14,6 +14,7 @@
 #include "cli/raster_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/stress_command.hpp"
+#include "cli/temporal_command.hpp"
 #include "cli/sweep_command.hpp"
 #include "cli/wordlength_command.hpp"
 
@@ -32,6 +33,7 @@ struct Commands {
   WordLengthCommand wordlength;
   EnginesCommand engines;
   ImportCommand import;
+  TemporalCommand temporal;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

@@ -37,6 +37,8 @@ struct ScreenLightPoint {
   // object's first polygon), so nearer objects' surfaces hide it in engines that resolve
   // visibility by priority. 0: above every polygon.
   std::int32_t priority = 0;
+  // Where it came from (the scene's object and its light), -1 when read from a polygon list.
+  std::int32_t object = -1, light = -1;
 };
 
 // Stage F's input (seed 002, SPEC F): the scene's convex polyhedra in eye space, the geometric

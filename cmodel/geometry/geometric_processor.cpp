@@ -104,7 +104,7 @@ struct ChannelGeometry {
   // the runway) but not over nearer objects, which come earlier in the list.
   // Directional lights (beam, below) are decided here, as a real CIG's light-point processor does,
   // so every engine gets them through the list: a light whose beam misses the eye is not listed.
-  void light_points(const Object& object, const WorldObject& wobject) {
+  void light_points(const Object& object, const WorldObject& wobject, std::uint32_t object_index) {
     stats.light_points_in += object.light_points.size();
     std::size_t next = 0;  // the next of the object's directional lights
     for (std::size_t i = 0; i < object.light_points.size(); ++i) {
@@ -128,6 +128,8 @@ struct ChannelGeometry {
       s.ds = std::min(1.0, std::max(min_ds, lp.diameter / (tan_half_fov * e.z)));
       s.intensity = lp.intensity * f;
       s.priority = std::int32_t(out.polygons.size());
+      s.object = std::int32_t(object_index);
+      s.light = std::int32_t(i);
       out.light_points.push_back(s);
     }
   }
@@ -270,7 +272,7 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
   for (const PriorityEntry& entry : list.objects) {
     const Object& object = scene.objects[entry.object];
     const WorldObject& wobject = db.objects[entry.object];
-    if (entry.lights) g.light_points(object, wobject);
+    if (entry.lights) g.light_points(object, wobject, entry.object);
     for (std::uint32_t si : list.run(entry))
       g.subobject(object.subobjects[si], wobject.subobjects[si], entry.object, si, list.back_to_front);
   }
