@@ -10,6 +10,7 @@ flightgear-data-base, fetched by tools/fetch_flightgear.sh (tools/test.sh runs i
                    edge and sets the touchdown zone's inner gap anywhere in 18-22.5 m: two layouts
                    that follow it from the same thresholds differ by less); the scene renders
                    as written (cig render exits 0 and draws light points).
+  temporal WORKDIR `cig temporal` on the night approach within the sample lattice's bounds.
   refuse WORKDIR   an unknown airport, a missing data folder and an --out that cig import did not
                    write: exit 2, a message naming the file and the rule, nothing written or
                    replaced.
@@ -122,6 +123,33 @@ def case_import(cig, work):
           f"(edge within {check['runway_edge']['max_m']} m of TerraGear's), frame {frames - 1000} draws {drawn} light points")
 
 
+def case_temporal(cig, work):
+    """Night approach, 10 frames 17 s before touchdown, no objects (terrain, runways, lights), 256
+    lines: every engine's scintillation and crawl within the sample lattice's bounds (derived in
+    cmodel/studies/temporal_quality.cpp and docs/flightgear.md) at 4 and 16 samples a pixel, with
+    lights and edge rows measured, the change between frames below the bound's double, and the plot
+    written."""
+    scene, report, plot = (os.path.join(work, n) for n in ("night.json", "temporal.json", "temporal.png"))
+    ok([cig, "import", "flightgear", "BIKF", "--radius-km", "20", "--time", "night", "--no-objects", "--raster", "256",
+        "--out", scene])
+    ok([cig, "temporal", scene, "--frames", "12000:12009", "--engines", "float,segment,quadtree", "--spp", "4,16",
+        "--report", report, "--plot", plot])
+    with open(report) as f:
+        rep = json.load(f)
+    if len(rep["series"]) != 6 or not os.path.getsize(plot) > 1000:
+        fail(f"{len(rep['series'])} series, plot {os.path.getsize(plot)} bytes")
+    for s in rep["series"]:
+        sc, cr, name = s["scintillation"], s["crawl"], f"{s['engine']} spp {s['spp']}"
+        if sc["light_frames"] < 20 or cr["rows"] < 100:
+            fail(f"{name}: {sc['light_frames']} light-frames, {cr['rows']} edge rows measured: too few to judge")
+        if sc["bound_violations"] or cr["bound_violations"]:
+            fail(f"{name}: {sc['bound_violations']} lights, {cr['bound_violations']} rows beyond the lattice's bounds")
+        if cr["max_delta_px"] > 2 * cr["bound_px"]:
+            fail(f"{name}: an edge row moved {cr['max_delta_px']} px between frames (bound {2 * cr['bound_px']})")
+    print("; ".join(f"{s['engine']} spp {s['spp']}: scintillation rms change {s['scintillation']['rms_delta']:.3f}, "
+                    f"crawl rms change {s['crawl']['rms_delta_px']:.3f} px" for s in rep["series"]))
+
+
 def refused(cmd, words):
     r = run(cmd)
     if r.returncode != 2 or not all(w in r.stderr for w in words):
@@ -151,7 +179,7 @@ def main():
     cig, case, work = sys.argv[1:]
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    {"import": case_import, "refuse": case_refuse}[case](cig, work)
+    {"import": case_import, "refuse": case_refuse, "temporal": case_temporal}[case](cig, work)
 
 
 if __name__ == "__main__":
