@@ -381,7 +381,7 @@ json approach_keyframes(const FlightgearImportOptions& o, const RunwayFrame& f, 
 }
 
 // Sky, sun and fog by time of day. Dusk: the sun 2 degrees up in the west-south-west, the sky's
-// glow; night: no sun, starlight ambient; day: a high sun. Fog ends where the visibility ends.
+// glow; night: a high moon's faint light; day: a high sun. Fog ends where the visibility ends.
 void environment(TimeOfDay t, json& scene) {
   Rgb sky;
   glm::dvec3 sun;
@@ -390,8 +390,8 @@ void environment(TimeOfDay t, json& scene) {
     case TimeOfDay::day:
       sky = {0.55, 0.68, 0.85}, sun = {-0.4, -0.6, 0.7}, sun_i = 0.7, ambient = 0.3, fog_start = 2000, fog_end = 40000;
       break;
-    case TimeOfDay::night:
-      sky = {0.012, 0.014, 0.03}, sun = {0, 0, 1}, sun_i = 0, ambient = 0.05, fog_start = 0, fog_end = 30000;
+    case TimeOfDay::night:  // a high moon
+      sky = {0.012, 0.014, 0.03}, sun = {0.3, -0.5, 0.8}, sun_i = 0.12, ambient = 0.06, fog_start = 0, fog_end = 30000;
       break;
     default:
       sky = {0.28, 0.24, 0.32}, sun = {-0.92, -0.38, 0.035}, sun_i = 0.35, ambient = 0.22, fog_start = 1000,
@@ -631,7 +631,9 @@ FlightgearImport import_flightgear(const FlightgearImportOptions& o) {
   scene["name"] = a.icao + " " + a.name + ": ILS approach runway " + parts.approach_end + " at " + time_name(o.time) +
                   " (FlightGear data)";
   scene["raster"] = o.raster;
-  scene["view"] = {{"near", 1.0}, {"light_point_min_diameter", 3}};
+  // Light points at least 5 grid units wide (0.6 pixel at 512 lines): a CIG's minimum spot size,
+  // which keeps a distant runway light on enough samples not to vanish between them.
+  scene["view"] = {{"near", 1.0}, {"light_point_min_diameter", 5}};
   scene["channels"] = json::array({{{"name", "left"}, {"yaw", -40}, {"pitch", 0}, {"fov", 40}},
                                    {{"name", "centre"}, {"yaw", 0}, {"pitch", 0}, {"fov", 40}},
                                    {{"name", "right"}, {"yaw", 40}, {"pitch", 0}, {"fov", 40}}});
