@@ -14,8 +14,8 @@
 #include "cli/raster_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/stress_command.hpp"
-#include "cli/temporal_command.hpp"
 #include "cli/sweep_command.hpp"
+#include "cli/temporal_command.hpp"
 #include "cli/wordlength_command.hpp"
 
 namespace cig::cli {

@@ -7,11 +7,11 @@
 
 #include "cli/gnuplot_plot.hpp"
 #include "cli/output_plan.hpp"
+#include "cli/temporal_study.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
 #include "registry/engine_registry.hpp"
 #include "scene/scene_loader.hpp"
-#include "studies/temporal_quality.hpp"
 
 namespace cig::cli {
 
@@ -23,7 +23,9 @@ void TemporalCommand::add_to(CLI::App& app) {
   sub->add_option("--frames", frames_text, "inclusive frame range A:B")->required();
   sub->add_option("--channel", channel, "the channel (default: the middle one)")
       ->check(CLI::Range(0, kMaxChannelIndex));
-  sub->add_option("--engines", engines_text, "engines, comma-separated (default float,segment,quadtree)");
+  sub->add_option("--engines", engines_text,
+                  "engines, comma-separated (default float,segment,quadtree); float-snap: the reference on the "
+                  "formatter grid");
   sub->add_option("--spp", spp_text, "samples per pixel, comma-separated (default 16)");
   sub->add_option("--pipelines", pipelines,
                   "rendering pipelines per channel: the priority engines render them and merge them, the float "
@@ -137,7 +139,8 @@ int TemporalCommand::run() {
     for (int spp : o.spp) {  // every engine and setting before any work
       EngineOptions eo;
       eo.params["spp"] = std::to_string(spp);
-      make_engine(e, eo);
+      eo.snap = e == "float-snap";
+      make_engine(eo.snap ? "float" : e, eo);
     }
   OutputPlan plan;
   plan.scene_inputs(scene);

@@ -1,5 +1,5 @@
 // `cig temporal` (temporal_command.cpp): temporal image quality over a run of frames of one
-// channel, per engine and samples per pixel (studies/temporal_quality.hpp): light-point
+// channel, per engine and samples per pixel (cli/temporal_study.hpp): light-point
 // scintillation, edge crawl, popping; a table, a JSON report and a plot.
 #pragma once
 

@@ -181,7 +181,9 @@ AirportLightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s, doub
   b.vertical_deg = s.vertical_deg;
   return b;
 }
-AirportLightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s) { return aim(axis, inward, s, s.elevation_deg); }
+AirportLightBeam aim(glm::dvec2 axis, glm::dvec2 inward, const BeamSpec& s) {
+  return aim(axis, inward, s, s.elevation_deg);
+}
 
 AirportLight make_light(AirportLightType type, const std::string& end, glm::dvec2 p, double z, const Rgb& colour,
                         double intensity, const AirportLightBeam& beam) {
@@ -381,7 +383,7 @@ void add_reil(const Runway& r, const Approach& a, std::vector<AirportLight>& out
   if (a.end->reil == 0) return;
   for (int side : {1, -1}) {
     const double y = side * (r.width_m / 2 + kReilOutsideEdgeM);
-    AirportLightBeam beam;                                                      // omnidirectional (code 1)
+    AirportLightBeam beam;                                               // omnidirectional (code 1)
     if (a.end->reil == 2) beam = aim(-a.along, a.inward(y), kReilBeam);  // toe-in -15: 15 deg outward
     out.push_back(
         make_light(AirportLightType::reil, a.end->id, a.at(a.threshold, y), kElevatedHeightM, kWhite, 1.0, beam));

@@ -126,7 +126,7 @@ def case_import(cig, work):
 def case_temporal(cig, work):
     """Night approach, 10 frames 17 s before touchdown, no objects (terrain, runways, lights), 256
     lines: every engine's scintillation and crawl within the sample lattice's bounds (derived in
-    cmodel/studies/temporal_quality.cpp and docs/flightgear.md) at 4 and 16 samples a pixel, with
+    cmodel/cli/temporal_study.cpp and docs/flightgear.md) at 4 and 16 samples a pixel, with
     lights and edge rows measured, the change between frames below the bound's double, and the plot
     written."""
     scene, report, plot = (os.path.join(work, n) for n in ("night.json", "temporal.json", "temporal.png"))

@@ -1,4 +1,4 @@
-#include "studies/temporal_quality.hpp"
+#include "cli/temporal_study.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -283,7 +283,10 @@ TemporalSeries run_series(const Scene& scene, const ImageGenerator& gen, const T
   ts.spp = spp;
   EngineOptions eo;
   eo.params["spp"] = std::to_string(spp);
-  const auto eng = make_engine(engine, eo);
+  // "float-snap": the reference with positions snapped to the formatter grid, the fixed-point
+  // engines' like-for-like peer.
+  eo.snap = engine == "float-snap";
+  const auto eng = make_engine(eo.snap ? "float" : engine, eo);
   const int s = int(std::lround(std::sqrt(double(spp))));
   const bool snapped = engine != "float";
   const double snap_px = snapped ? 0.5 * scene.raster / 4096.0 : 0;

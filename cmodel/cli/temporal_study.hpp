@@ -1,4 +1,5 @@
-// Temporal image quality as simulator acceptance tests measure it (`cig temporal`), over a run of
+// Temporal image quality as simulator acceptance tests measure it (`cig temporal`; here beside the
+// command because it drives the image generator and the engine registry), over a run of
 // frames of one channel, per engine and samples per pixel:
 //  * light-point scintillation: per isolated light, its rendered energy (a render of the frame's
 //    light points alone, summed around the light) against its analytic energy (intensity x colour
