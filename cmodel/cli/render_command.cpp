@@ -120,10 +120,7 @@ void check_frames(const Scene& scene, int a, int b, const std::vector<int>& chan
     for (int c : channels) {
       nlohmann::ordered_json unused;
       try {
-        if (pipelines > 1)
-          for (const ScreenFrame& part : generator.geometry_parts(frame, c, pipelines, unused))
-            checker.check_frame(part);
-        else checker.check_frame(generator.geometry(frame, c, unused));
+        for (const ScreenFrame& part : generator.geometry_parts(frame, c, pipelines, unused)) checker.check_frame(part);
       } catch (const InputError& e) {
         throw InputError(scene.file, e.where(), e.rule());  // the scene that makes the frame
       }

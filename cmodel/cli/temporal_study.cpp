@@ -22,25 +22,28 @@ constexpr double kIsolationPx = 2;    // no other light centre this close (Cheby
 constexpr double kMaxLightUnits = 7;  // the formatter's largest light diameter, grid units
 const Fog kNoFog{{0, 0, 0}, 1e30, 2e30};
 
-// The frame's light points alone, on black, without fog: each light's energy is its pixels' sum.
+// The frame's view with nothing in it, on black, without fog (not a copy of its lists: they hold
+// up to 10^5 polygons a frame).
+ScreenFrame empty_like(const ScreenFrame& f) {
+  ScreenFrame e;
+  e.raster = f.raster, e.frame = f.frame, e.channel = f.channel;
+  e.tan_half_fov = f.tan_half_fov, e.near = f.near;
+  e.background = {0, 0, 0};
+  e.fog = kNoFog;
+  return e;
+}
+
+// The frame's light points alone: each light's energy is its pixels' sum.
 ScreenFrame lights_alone(const ScreenFrame& f) {
-  ScreenFrame l = f;
-  l.polygons.clear();
-  l.polyhedra.clear();
+  ScreenFrame l = empty_like(f);
+  l.light_points = f.light_points;
   for (ScreenLightPoint& p : l.light_points) p.priority = 0;
-  l.background = {0, 0, 0};
-  l.fog = kNoFog;
   return l;
 }
 
-// The edge object's surface polygons alone, white and unshaded on black: a pixel is its coverage.
+// The edge object's surface polygons alone, white and unshaded: a pixel is its coverage.
 ScreenFrame surface_alone(const ScreenFrame& f, int object, int subobject) {
-  ScreenFrame m = f;
-  m.polygons.clear();
-  m.light_points.clear();
-  m.polyhedra.clear();
-  m.background = {0, 0, 0};
-  m.fog = kNoFog;
+  ScreenFrame m = empty_like(f);
   for (const ScreenPolygon& p : f.polygons) {
     if (p.object != object || p.subobject != subobject) continue;
     ScreenPolygon w = p;
@@ -94,6 +97,12 @@ std::vector<OutlineEdge> outline(const Scene& scene, int object, int subobject) 
 
 namespace cig {
 namespace {
+
+// The crawl bound of a row (docs/flightgear.md): 1/S pixel, the window's rounding to 1/255, and the
+// vertices' snap to the formatter grid times (1 + |dx/dy|).
+double edge_bound(int s, double snap_px, double slope) {
+  return 1.0 / s + snap_px * (1 + slope) + (2 * kEdgeWindow + 1) * 0.5 / 255;
+}
 
 struct Projected {
   bool valid = false, inside_right = false, steep = false;  // steep: |dx/dy| <= kMaxEdgeSlope
@@ -168,7 +177,7 @@ void measure_edges(const std::vector<OutlineEdge>& edges, const ChannelView& vie
   for (std::size_t i = 0; i < edges.size(); ++i) {
     if (!p[i].valid || !p[i].steep) continue;
     const double slope = std::fabs((p[i].xb - p[i].xa) / (p[i].yb - p[i].ya));
-    const double bound = 1.0 / s + snap_px * (1 + slope) + (2 * kEdgeWindow + 1) * 0.5 / 255;
+    const double bound = edge_bound(s, snap_px, slope);
     const int y0 = std::max(0, int(std::ceil(std::min(p[i].ya, p[i].yb) - 0.5)));
     const int y1 = std::min(n - 1, int(std::ceil(std::max(p[i].ya, p[i].yb) - 0.5)) - 1);
     for (int y = y0; y <= y1; ++y) {
@@ -295,9 +304,7 @@ TemporalSeries run_series(const Scene& scene, const ImageGenerator& gen, const T
   const auto t0 = std::chrono::steady_clock::now();
   for (int frame = o.first; frame <= o.last; ++frame) {
     nlohmann::ordered_json unused;
-    const std::vector<ScreenFrame> parts = o.pipelines > 1
-                                               ? gen.geometry_parts(frame, o.channel, o.pipelines, unused)
-                                               : std::vector<ScreenFrame>{gen.geometry(frame, o.channel, unused)};
+    const std::vector<ScreenFrame> parts = gen.geometry_parts(frame, o.channel, o.pipelines, unused);
     const ScreenFrame f = parts.size() > 1 ? concatenate_parts(parts) : parts[0];
     // Engines that do not merge pipelines (the float reference) render their concatenation.
     const EngineRun full = parts.size() > 1 && eng->renders_parts() ? eng->render_parts(parts) : eng->render(f);
@@ -324,7 +331,7 @@ TemporalSeries run_series(const Scene& scene, const ImageGenerator& gen, const T
   ts.edge_rows = crawl.error.n, ts.edge_deltas = crawl.delta.n, ts.edge_bound_violations = crawl.violations;
   ts.edge_rms_error = crawl.error.rms(), ts.edge_max_error = crawl.error.max;
   ts.edge_rms_delta = crawl.delta.rms(), ts.edge_max_delta = crawl.delta.max;
-  ts.edge_bound = 1.0 / s + snap_px * (1 + kMaxEdgeSlope) + (2 * kEdgeWindow + 1) * 0.5 / 255;
+  ts.edge_bound = edge_bound(s, snap_px, kMaxEdgeSlope);
   return ts;
 }
 

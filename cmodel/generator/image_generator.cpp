@@ -89,6 +89,7 @@ ScreenFrame ImageGenerator::geometry(int frame, int channel, nlohmann::ordered_j
 
 std::vector<ScreenFrame> ImageGenerator::geometry_parts(int frame, int channel, int pipelines,
                                                         nlohmann::ordered_json& report) const {
+  if (pipelines <= 1) return {geometry(frame, channel, report)};
   const ChannelView view = make_channel_view(scene_, frame, channel);
   const PipelineLoad load = load_pipelines(manage(view, report), db_, pipelines);
   GeometryStats gs;

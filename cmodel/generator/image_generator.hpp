@@ -36,7 +36,7 @@ class ImageGenerator {
 
   // Stages A and B for one channel split among `pipelines` rendering pipelines (seed 000's Nc,
   // manager/pipeline_loading.hpp): one polygon list per pipeline, in priority order; the report
-  // gives each pipeline's polygons and the load balance (max / mean).
+  // gives each pipeline's polygons and the load balance (max / mean). pipelines <= 1: geometry's one list.
   std::vector<ScreenFrame> geometry_parts(int frame, int channel, int pipelines, nlohmann::ordered_json& report) const;
 
   // A, B and the engine for the given channels of one frame; channels run on up to `threads`

@@ -68,18 +68,12 @@ double GroundHeight::at_or(double x, double y, double fallback) const {
   return std::isnan(z) ? fallback : z;
 }
 
-std::uint32_t PolygonSoup::vertex(const glm::dvec3& v) {
-  // The last few vertices are where a strip of quads finds its shared corners.
-  const std::size_t n = vertices.size();
-  for (std::size_t k = n > 8 ? n - 8 : 0; k < n; ++k)
-    if (vertices[k] == v) return std::uint32_t(k);
-  vertices.push_back(v);
-  return std::uint32_t(n);
-}
-
 void PolygonSoup::add(const std::vector<glm::dvec3>& corners, const Rgb& colour) {
   std::vector<std::uint32_t> p;
-  for (const glm::dvec3& c : corners) p.push_back(vertex(c));
+  for (const glm::dvec3& c : corners) {
+    p.push_back(std::uint32_t(vertices.size()));
+    vertices.push_back(c);
+  }
   polygons.push_back(std::move(p));
   colours.push_back(colour);
 }

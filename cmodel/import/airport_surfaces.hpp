@@ -32,12 +32,12 @@ class GroundHeight {
   std::vector<std::uint32_t> start_, items_;  // CSR: cell c's triangles are items_[start_[c] .. start_[c + 1])
 };
 
-// Polygons with their colours, vertices shared by exact position: one subobject's worth.
+// Polygons with their colours, each with its own corners (the scene writer shares them by
+// millimetre position): one subobject's worth.
 struct PolygonSoup {
   std::vector<glm::dvec3> vertices;
   std::vector<std::vector<std::uint32_t>> polygons;
   std::vector<Rgb> colours;
-  std::uint32_t vertex(const glm::dvec3& v);
   void add(const std::vector<glm::dvec3>& corners, const Rgb& colour);
 };
 

@@ -1,6 +1,7 @@
 #include "import/flightgear_import.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -40,6 +41,7 @@ constexpr double kMinLightHeightM = 0.45;
 constexpr double kGlidePathOriginM = 300;
 
 double round_mm(double v) { return std::round(v * 1000) / 1000; }
+glm::dvec3 round_mm(const glm::dvec3& p) { return {round_mm(p.x), round_mm(p.y), round_mm(p.z)}; }
 json point(const glm::dvec3& p) { return json::array({round_mm(p.x), round_mm(p.y), round_mm(p.z)}); }
 json colour(const Rgb& c) { return json::array({round_mm(c.r), round_mm(c.g), round_mm(c.b)}); }
 
@@ -114,12 +116,11 @@ namespace {
 // One subobject's vertices, shared by their millimetre position (what the scene file keeps).
 struct SharedVertices {
   json vertices = json::array();
-  std::unordered_map<std::string, std::uint32_t> index;
+  std::map<std::array<long long, 3>, std::uint32_t> index;  // by position in millimetres
   std::uint32_t add(const glm::dvec3& p) {
-    const json q = point(p);
-    const std::string key = q.dump();
+    const std::array<long long, 3> key{std::llround(p.x * 1000), std::llround(p.y * 1000), std::llround(p.z * 1000)};
     auto [it, fresh] = index.emplace(key, std::uint32_t(vertices.size()));
-    if (fresh) vertices.push_back(q);
+    if (fresh) vertices.push_back(point(p));
     return it->second;
   }
 };
@@ -150,10 +151,7 @@ json terrain_cell(const std::string& name, const TerrainMesh& mesh, const std::v
     json polys = json::array();
     for (std::uint32_t t : by_material[m]) {
       std::vector<glm::dvec3> v;
-      for (const glm::dvec3& p : mesh.triangles[t].v) {
-        const json q = point(p + glm::dvec3(0, 0, lift));
-        v.push_back({q[0].get<double>(), q[1].get<double>(), q[2].get<double>()});
-      }
+      for (const glm::dvec3& p : mesh.triangles[t].v) v.push_back(round_mm(p + glm::dvec3(0, 0, lift)));
       if (!check_convex_planar(v).empty()) {
         ++counts.dropped;
         continue;
