@@ -31,6 +31,20 @@ inline std::vector<std::string> json_blocks(const std::string& markdown) {
   return out;
 }
 
+// True when `text` holds the pieces of `pattern` between its '*'s, in order (the corpus's wildcard).
+inline bool contains_pattern(const std::string& text, const std::string& pattern) {
+  std::size_t at = 0, from = 0;
+  for (;;) {
+    const std::size_t star = pattern.find('*', from);
+    const std::string piece = pattern.substr(from, star == std::string::npos ? std::string::npos : star - from);
+    const std::size_t pos = text.find(piece, at);
+    if (pos == std::string::npos) return false;
+    at = pos + piece.size();
+    if (star == std::string::npos) return true;
+    from = star + 1;
+  }
+}
+
 struct BadInputCase {
   std::string name, file, command, message;
 };
