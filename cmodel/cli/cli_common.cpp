@@ -129,6 +129,20 @@ bool scene_exceeds_ids(const Scene& scene) {
          scene.light_point_count() > std::size_t(hls::kMaxPolygonIds);
 }
 
+std::vector<int> selected_channels(const Scene& scene, int channel) {
+  std::vector<int> channels;
+  if (channel >= 0) {
+    if (channel >= int(scene.channels.size()))
+      throw InputError(scene.file, "--channel",
+                       "channel " + std::to_string(channel) + " does not exist (scene has " +
+                           std::to_string(scene.channels.size()) + ")");
+    channels.push_back(channel);
+  } else {
+    for (int c = 0; c < int(scene.channels.size()); ++c) channels.push_back(c);
+  }
+  return channels;
+}
+
 std::string report_text(const nlohmann::ordered_json& report) {
   nlohmann::ordered_json with;
   with["provenance"] = provenance_json();

@@ -141,6 +141,9 @@ bool scene_exceeds_ids(const Scene& scene);
 // stderr.
 std::string drop_warning(const nlohmann::ordered_json& engine_report, const std::string& image);
 
+// The channels a command works on: all, or --channel C (InputError when the scene lacks it).
+std::vector<int> selected_channels(const Scene& scene, int channel);
+
 // The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.
 inline void frame_range(const std::string& frames_text, int frame_k, bool frame_given, int frame_count,
                         const std::string& scene_file, int& a, int& b) {

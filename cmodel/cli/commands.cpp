@@ -19,6 +19,7 @@ void Commands::add_to(CLI::App& app) {
   engines.add_to(app);
   import.add_to(app);
   temporal.add_to(app);
+  timing.add_to(app);
   // Listed for --help; `cig cosim ...` never reaches the parser (main.cpp forwards it to cig-cosim).
   app.add_subcommand("cosim",
                      "co-simulate the quadtree RTL against the kernels and the architecture model, or with "
@@ -52,6 +53,7 @@ int Commands::run() {
   if (*engines.sub) return engines.run();
   if (*import.sub) return import.run();
   if (*temporal.sub) return temporal.run();
+  if (*timing.sub) return timing.run();
   return 0;
 }
 

@@ -16,6 +16,7 @@
 #include "cli/stress_command.hpp"
 #include "cli/sweep_command.hpp"
 #include "cli/temporal_command.hpp"
+#include "cli/timing_command.hpp"
 #include "cli/wordlength_command.hpp"
 
 namespace cig::cli {
@@ -34,6 +35,7 @@ struct Commands {
   EnginesCommand engines;
   ImportCommand import;
   TemporalCommand temporal;
+  TimingCommand timing;
 
   void add_to(CLI::App& app);
   // Throws InputError naming the commands when argv[1] names none (instead of CLI11's "A

@@ -1,5 +1,7 @@
 #include "cli/output_plan.hpp"
 
+#include "cli/gnuplot_plot.hpp"
+
 #include "cli/cli_common.hpp"
 #include "common/error.hpp"
 
@@ -101,6 +103,13 @@ void OutputPlan::check_file(std::size_t k) const {
 void OutputPlan::check() const {
   for (const Entry& f : folders_) check_folder(f);
   for (std::size_t k = 0; k < files_.size(); ++k) check_file(k);
+}
+
+void OutputPlan::report_and_plot(const std::string& report_file, const std::string& plot_file) {
+  if (!report_file.empty()) file(report_file, "--report");
+  if (plot_file.empty()) return;
+  file(plot_file, "--plot");
+  check_plot_output(plot_file, "--plot");
 }
 
 }  // namespace cig::cli

@@ -23,6 +23,8 @@ class OutputPlan {
   void scene_inputs(const Scene& scene);
   // A file the run writes, named by `option` (callers skip an optional output not given).
   void file(const std::string& path, const std::string& option);
+  // --report FILE and --plot FILE.png when given ("" = not), the plot with gnuplot's presence.
+  void report_and_plot(const std::string& report_file, const std::string& plot_file);
   // A folder the run writes into, named by `option`, and the names of the files it writes there
   // (those known before the work: the images of each frame and channel).
   void folder(const std::string& path, const std::string& option, std::set<std::string> names = {});

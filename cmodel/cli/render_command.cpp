@@ -7,14 +7,18 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <set>
 #include <thread>
 
+#include "cli/governed_frames.hpp"
 #include "cli/output_plan.hpp"
 #include "common/progress.hpp"
 #include "generator/image_generator.hpp"
 #include "image/image.hpp"
 #include "scene/scene_loader.hpp"
+#include "studies/frame_timing.hpp"
 
 namespace cig::cli {
 
@@ -37,6 +41,11 @@ void RenderCommand::add_to(CLI::App& app) {
                   "rendering pipelines per channel (seed 000's Nc): the channel's priority list split into N "
                   "disjoint lists, each rasterised on its own thread, merged by priority (priority engines)")
       ->check(CLI::Range(1, 16));
+  sub->add_option("--budget-ms", budget_ms,
+                  "the frame governor: shorten the visibility range (and lower the segment processor's overload "
+                  "threshold) until every stage's modelled time fits MS; the images are the governed ones, the "
+                  "report says what was cut, the prediction and the PSNR against the ungoverned frame")
+      ->check(CLI::Range(0.1, 1e6));
   sub->add_flag("--ids", write_ids_files, "also write per-channel id buffers (CIGIDS1)");
   sub->add_flag("--html", html,
                 "also write DIR/index.html: the images, the per-frame and channel counts and times, the report, "
@@ -47,21 +56,6 @@ void RenderCommand::add_to(CLI::App& app) {
 }
 
 namespace {
-
-// The channels to render: all, or --channel C.
-std::vector<int> selected_channels(const Scene& scene, int channel) {
-  std::vector<int> channels;
-  if (channel >= 0) {
-    if (channel >= int(scene.channels.size()))
-      throw InputError(scene.file, "--channel",
-                       "channel " + std::to_string(channel) + " does not exist (scene has " +
-                           std::to_string(scene.channels.size()) + ")");
-    channels.push_back(channel);
-  } else {
-    for (int c = 0; c < int(scene.channels.size()); ++c) channels.push_back(c);
-  }
-  return channels;
-}
 
 // A channel image's file name without its extension.
 std::string image_name(const Scene& scene, int frame, int channel) {
@@ -206,6 +200,17 @@ nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene,
   return report;
 }
 
+// The machine's modelled frame time (studies/frame_timing.hpp, what `cig timing` prints), when the
+// engine has a hardware time model.
+std::optional<nlohmann::ordered_json> machine_timing(int frame, int raster, const std::vector<ChannelOutput>& outs) {
+  std::vector<ChannelTiming> channels;
+  for (const ChannelOutput& co : outs) {
+    if (!co.report["raster"].contains("hardware_ms")) return std::nullopt;
+    channels.push_back(time_channel(co.report, raster, {}));
+  }
+  return frame_timing_json(time_frame(frame, channels, {}));
+}
+
 }  // namespace
 
 int RenderCommand::run() {
@@ -221,6 +226,7 @@ int RenderCommand::run() {
   probe->check_raster(scene.raster);
   probe->check_scene(scene);
   if (pipelines > 1) probe->check_renders_parts();
+  refuse_engine_budget(eo);
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
   if (html) prepare_render_html(out_dir);
   OutputPlan plan;
@@ -231,25 +237,43 @@ int RenderCommand::run() {
   plan.file(report_file, "--report");
   plan.check();
   check_frames(scene, a, b, channels, *probe, manager_unit.arith(), pipelines);
+  std::unique_ptr<ImageGenerator> generator;
+  std::unique_ptr<GovernedRun> governed;  // --budget-ms
+  if (budget_ms > 0)
+    governed = std::make_unique<GovernedRun>(scene, manager_unit.arith(), engine.engine, eo, budget_ms);
+  else generator = std::make_unique<ImageGenerator>(scene, CullSettings{}, manager_unit.arith());
   std::filesystem::create_directories(out_dir);
 
   // Phase 2: the frames.
-  const ImageGenerator generator(scene, {}, manager_unit.arith());
   nlohmann::ordered_json report = render_report(*this, scene, eo, load_ms);
   const auto t_all = Clock::now();
   Progress progress("cig render", b - a + 1);
   for (int frame = a; frame <= b; ++frame) {
     const auto t_frame = Clock::now();
-    std::vector<ChannelOutput> outs = generator.render(frame, channels, engine.engine, eo, threads, pipelines);
+    std::vector<ChannelOutput> outs, plain;
+    FrameTiming fr_timing;  // governed: the governed frame's stages
+    nlohmann::ordered_json fr;
+    fr["frame"] = frame;
+    if (governed) {
+      const GovernedFrame g = governed->render(frame, channels, threads, pipelines, plain, outs);
+      fr["governor"] = governed_json(g);
+      fr_timing = g.governed;
+      if (g.governed.over_budget)
+        progress.note("frame " + std::to_string(frame) +
+                      " is over budget after governing: " + std::to_string(g.governed.frame_ms) +
+                      " ms modelled against " + std::to_string(budget_ms) + " ms (report: governor)");
+    } else {
+      outs = generator->render(frame, channels, engine.engine, eo, threads, pipelines);
+    }
     const double render_ms = ms_since(t_frame);
     const auto t_out = Clock::now();
     write_channel_images(scene, out_dir, frame, write_ids_files, outs);
-    nlohmann::ordered_json fr;
-    fr["frame"] = frame;
     if (outs.size() > 1) fr["panorama"] = write_panorama(scene, out_dir, frame, outs);
     fr["render_ms"] = render_ms;
     fr["output_ms"] = ms_since(t_out);
     fr["channels"] = nlohmann::ordered_json::array();
+    if (governed) fr["timing"] = frame_timing_json(fr_timing);
+    else if (const auto t = machine_timing(frame, scene.raster, outs)) fr["timing"] = *t;
     for (auto& co : outs) {
       progress.note(drop_warning(co.report["raster"],
                                  "frame " + std::to_string(frame) + " channel " + std::to_string(co.channel)));

@@ -17,7 +17,8 @@ struct RenderCommand {
   CLI::App* sub = nullptr;
   std::string scene_file, out_dir = "out", report_file, frames_text;
   int frame_k = -1, channel = -1, threads = 1;
-  int pipelines = 1;  // rendering pipelines per channel (seed 000's Nc)
+  int pipelines = 1;     // rendering pipelines per channel (seed 000's Nc)
+  double budget_ms = 0;  // --budget-ms: the frame governor (cli/governed_frames.hpp); 0 = off
   bool write_ids_files = false;
   bool html = false;  // --html: DIR/index.html
   CLI::Option* frame_opt = nullptr;

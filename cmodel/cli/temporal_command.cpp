@@ -144,11 +144,7 @@ int TemporalCommand::run() {
     }
   OutputPlan plan;
   plan.scene_inputs(scene);
-  if (!report_file.empty()) plan.file(report_file, "--report");
-  if (!plot_file.empty()) {
-    plan.file(plot_file, "--plot");
-    check_plot_output(plot_file, "--plot");
-  }
+  plan.report_and_plot(report_file, plot_file);
   plan.check();
   const TemporalStudy st = run_temporal_study(scene, o);
   print_table(st, o.last - o.first + 1);

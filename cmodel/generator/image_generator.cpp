@@ -6,6 +6,7 @@
 #include "manager/pipeline_loading.hpp"
 #include "manager/scene_manager.hpp"
 #include "registry/engine_registry.hpp"
+#include "timing/geometry_timing.hpp"
 
 namespace cig {
 
@@ -48,6 +49,25 @@ nlohmann::ordered_json manager_report(const SceneManagerStats& ms, const Manager
           {"ms", ms.ms}};
 }
 
+nlohmann::ordered_json operations_json(const OperationCounts& c) {
+  return {{"R", c.R}, {"C", c.C}, {"O", c.O}, {"L", c.L}, {"A", c.A}, {"M", c.M}, {"D", c.D}};
+}
+
+// Stage B in time (timing/geometry_timing.hpp): the two processors' operations and modelled ms.
+nlohmann::ordered_json geometry_timing_report(const GeometryStats& gs) {
+  const GeometryTiming t = time_geometry(gs.transform_ops, gs.clip_ops, gs.vertices_transformed);
+  return {{"vertices_transformed", gs.vertices_transformed},
+          {"clip_intersections", gs.clip_intersections},
+          {"divisions", gs.divisions},
+          {"transform_operations", operations_json(gs.transform_ops)},
+          {"clip_operations", operations_json(gs.clip_ops)},
+          {"transform_ms", t.transform_ns * 1e-6},
+          {"clip_ms", t.clip_ns * 1e-6},
+          {"ms", t.frame_ns * 1e-6},
+          {"limiting", t.limiting},
+          {"vertices_per_second", t.vertices_per_second}};
+}
+
 nlohmann::ordered_json geometry_report(const GeometryStats& gs) {
   return {{"polygons_in", gs.polygons_in},
           {"backfacing", gs.backfacing},
@@ -64,6 +84,7 @@ nlohmann::ordered_json geometry_report(const GeometryStats& gs) {
             {"nodes_visited", gs.bsp.nodes},
             {"partition_tests", gs.bsp.partitions},
             {"operations", {{"L", gs.bsp.ops.L}, {"C", gs.bsp.ops.C}, {"A", gs.bsp.ops.A}, {"M", gs.bsp.ops.M}}}}},
+          {"timing", geometry_timing_report(gs)},
           {"ms", gs.ms}};
 }
 
@@ -78,9 +99,23 @@ PriorityList ImageGenerator::manage(const ChannelView& view, nlohmann::ordered_j
   return list;
 }
 
-ScreenFrame ImageGenerator::geometry(int frame, int channel, nlohmann::ordered_json& report) const {
-  const ChannelView view = make_channel_view(scene_, frame, channel);
-  const PriorityList list = manage(view, report);
+PriorityList ImageGenerator::manage_governed(ChannelView& view, const FrameGovernor* governor,
+                                             nlohmann::ordered_json& report) const {
+  if (governor) {
+    GovernorDecision d;
+    governor->choose(
+        view.channel, view,
+        [&](const ChannelView& v, SceneManagerStats& s) { return manage_channel(db_, v, s, manager_); }, db_, d);
+    view.range = d.range;
+    report["governor"] = FrameGovernor::report(d);
+  }
+  return manage(view, report);
+}
+
+ScreenFrame ImageGenerator::geometry(int frame, int channel, nlohmann::ordered_json& report,
+                                     const FrameGovernor* governor) const {
+  ChannelView view = make_channel_view(scene_, frame, channel);
+  const PriorityList list = manage_governed(view, governor, report);
   GeometryStats gs;
   ScreenFrame f = process_channel(scene_, db_, view, list, gs);
   report["geometry"] = geometry_report(gs);
@@ -88,10 +123,11 @@ ScreenFrame ImageGenerator::geometry(int frame, int channel, nlohmann::ordered_j
 }
 
 std::vector<ScreenFrame> ImageGenerator::geometry_parts(int frame, int channel, int pipelines,
-                                                        nlohmann::ordered_json& report) const {
-  if (pipelines <= 1) return {geometry(frame, channel, report)};
-  const ChannelView view = make_channel_view(scene_, frame, channel);
-  const PipelineLoad load = load_pipelines(manage(view, report), db_, pipelines);
+                                                        nlohmann::ordered_json& report,
+                                                        const FrameGovernor* governor) const {
+  if (pipelines <= 1) return {geometry(frame, channel, report, governor)};
+  ChannelView view = make_channel_view(scene_, frame, channel);
+  const PipelineLoad load = load_pipelines(manage_governed(view, governor, report), db_, pipelines);
   GeometryStats gs;
   std::vector<ScreenFrame> parts;
   std::vector<std::uint64_t> polygons;
@@ -110,7 +146,7 @@ std::vector<ScreenFrame> ImageGenerator::geometry_parts(int frame, int channel, 
 
 std::vector<ChannelOutput> ImageGenerator::render(int frame, const std::vector<int>& channels,
                                                   const std::string& engine, const EngineOptions& options, int threads,
-                                                  int pipelines) const {
+                                                  int pipelines, const FrameGovernor* governor) const {
   std::vector<ChannelOutput> out(channels.size());
   const int n = std::max(1, std::min<int>(threads, int(channels.size())));
   if (int(engines_.size()) < n) engines_.resize(std::size_t(n));
@@ -131,12 +167,12 @@ std::vector<ChannelOutput> ImageGenerator::render(int frame, const std::vector<i
     co.report["name"] = scene_.channels[std::size_t(co.channel)].name;
     EngineRun run;
     if (pipelines > 1) {
-      const std::vector<ScreenFrame> parts = geometry_parts(frame, co.channel, pipelines, co.report);
+      const std::vector<ScreenFrame> parts = geometry_parts(frame, co.channel, pipelines, co.report, governor);
       const auto t0 = Clock::now();
       run = eng->render_parts(parts);
       run.report["ms"] = ms_since(t0);
     } else {
-      const ScreenFrame f = geometry(frame, co.channel, co.report);
+      const ScreenFrame f = geometry(frame, co.channel, co.report, governor);
       const auto t0 = Clock::now();
       run = eng->render(f);
       run.report["ms"] = ms_since(t0);

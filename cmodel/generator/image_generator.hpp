@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
+#include "generator/frame_governor.hpp"
 #include "manager/scene_manager.hpp"
 #include "scene/world_database.hpp"
 
@@ -32,22 +33,28 @@ class ImageGenerator {
   const Scene& scene() const { return scene_; }
 
   // Stages A and B for one channel: the polygon list a raster engine receives.
-  ScreenFrame geometry(int frame, int channel, nlohmann::ordered_json& report) const;
+  // governor: its visibility range for the frame (generator/frame_governor.hpp; report["governor"]).
+  ScreenFrame geometry(int frame, int channel, nlohmann::ordered_json& report,
+                       const FrameGovernor* governor = nullptr) const;
 
   // Stages A and B for one channel split among `pipelines` rendering pipelines (seed 000's Nc,
   // manager/pipeline_loading.hpp): one polygon list per pipeline, in priority order; the report
   // gives each pipeline's polygons and the load balance (max / mean). pipelines <= 1: geometry's one list.
-  std::vector<ScreenFrame> geometry_parts(int frame, int channel, int pipelines, nlohmann::ordered_json& report) const;
+  std::vector<ScreenFrame> geometry_parts(int frame, int channel, int pipelines, nlohmann::ordered_json& report,
+                                          const FrameGovernor* governor = nullptr) const;
 
   // A, B and the engine for the given channels of one frame; channels run on up to `threads`
   // worker threads, each with its own engine instance. pipelines > 1: each channel's list split
   // among that many rendering pipelines, each on its own thread, merged by the engine's video
   // stage (RasterEngine::render_parts).
   std::vector<ChannelOutput> render(int frame, const std::vector<int>& channels, const std::string& engine,
-                                    const EngineOptions& options, int threads, int pipelines = 1) const;
+                                    const EngineOptions& options, int threads, int pipelines = 1,
+                                    const FrameGovernor* governor = nullptr) const;
 
  private:
   PriorityList manage(const ChannelView& view, nlohmann::ordered_json& report) const;
+  // Stage A through the governor, when there is one: its range shortens `view`.
+  PriorityList manage_governed(ChannelView& view, const FrameGovernor* governor, nlohmann::ordered_json& report) const;
 
   const Scene& scene_;
   WorldDatabase db_;

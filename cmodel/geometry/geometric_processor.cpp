@@ -77,15 +77,61 @@ namespace {
 //   axis in the object's horizontal frame. The eye outside the rectangle |da| < h, |de| < v is
 //   rejected by dot products (cos da > cos h and the elevation bounds' sines, precomputed by the
 //   world database); inside it the lobe needs the two angles.
-double directional_light(const WorldLightDirection& w, const glm::dvec3& d, Rgb& colour) {
-  if (w.below && d.z < w.sin_below * glm::length(d)) colour = w.below_colour;
+// `ops` (processor 2) gains what ran; sqrt and atan2 count as 1 D each (GeometryStats).
+double directional_light(const WorldLightDirection& w, const glm::dvec3& d, Rgb& colour, OperationCounts& ops) {
+  ops.C += 2;  // the below and beam flags
+  if (w.below) {
+    ops.M += 3 + 1;  // |d|: 3 M + 2 A + sqrt (1 D); sin_below |d|: 1 M; the test: 1 C
+    ops.A += 2;
+    ops.D += 1;
+    ops.C += 1;
+    if (d.z < w.sin_below * glm::length(d)) colour = w.below_colour;
+  }
   if (!w.beam) return 1;
   const double x = glm::dot(d, w.right), y = glm::dot(d, w.along), z = glm::dot(d, w.up);
   const double r = std::sqrt(x * x + y * y);  // the horizontal distance: z = |d| sin el, r = |d| cos el
-  if (y < w.cos_horizontal * r || z * w.cos_lo - r * w.sin_lo < 0 || r * w.sin_hi - z * w.cos_hi < 0) return 0;
+  // Three dot products (3 M + 2 A each); r: 2 M + 1 A + sqrt (1 D).
+  ops.M += 9 + 2;
+  ops.A += 6 + 1;
+  ops.D += 1;
+  // The rectangle's three tests, each counted when it runs (the first failing one ends it).
+  ops.M += 1;
+  ops.C += 1;
+  if (y < w.cos_horizontal * r) return 0;
+  ops.M += 2;
+  ops.A += 1;
+  ops.C += 1;
+  if (z * w.cos_lo - r * w.sin_lo < 0) return 0;
+  ops.M += 2;
+  ops.A += 1;
+  ops.C += 1;
+  if (r * w.sin_hi - z * w.cos_hi < 0) return 0;
   const double da = std::atan2(x, y) / w.horizontal;  // in [-pi, pi]: the azimuth off the axis, wrapped
   const double de = (std::atan2(z, r) - w.elevation) / w.vertical;
+  ops.D += 4;      // two atan2 (1 D each), two divisions
+  ops.A += 1 + 2;  // - elevation; 1 - da^2 - de^2: 2 M + 2 A; max: 1 C
+  ops.M += 2;
+  ops.C += 1;
   return std::max(0.0, 1 - da * da - de * de);
+}
+
+// Processor 1's eye transform of n points, eye = B (p - eye): 3 A for p - eye, 9 M + 6 A for the
+// dmat3 * dvec3; 3 L read and 3 L written to the real-number channel.
+void eye_transform_ops(OperationCounts& ops, std::uint64_t n) {
+  ops.L += 6 * n;
+  ops.M += 9 * n;
+  ops.A += 9 * n;
+}
+
+// Processor 2's perspective division of n points (project): x / (t z) and -y / (t z) as the code
+// does them, 2 M + 2 D (t z formed twice; the sign is free); two clamps, 4 C; Xs, Ys, Zs, Is
+// written, 4 L.
+void project_ops(GeometryStats& stats, std::uint64_t n) {
+  stats.divisions += n;
+  stats.clip_ops.M += 2 * n;
+  stats.clip_ops.D += 2 * n;
+  stats.clip_ops.C += 4 * n;
+  stats.clip_ops.L += 4 * n;
 }
 
 // One channel's stage-B state: the view, its pyramid, and the list being built.
@@ -112,16 +158,33 @@ struct ChannelGeometry {
       if (next < wobject.light_directions.size() && wobject.light_directions[next].light == i)
         dir = &wobject.light_directions[next++];
       const glm::dvec3 e = view.to_eye(wobject.light_positions[i]);
+      eye_transform_ops(stats.transform_ops, 1);
+      stats.clip_ops.L += 3;  // outcode: the eye read, 5 x (3 M + 3 A + 1 C), 1 C (inside?)
+      stats.clip_ops.M += 15;
+      stats.clip_ops.A += 15;
+      stats.clip_ops.C += 5 + 1;
       if (pyramid.outcode(e)) continue;  // kept when the centre is inside the pyramid
       const LightPoint& lp = object.light_points[i];
       ScreenLightPoint s;
       s.colour = lp.colour;
       double f = 1;
-      if (dir && !((f = directional_light(*dir, view.eye - wobject.light_positions[i], s.colour)) > 0)) {
+      if (dir) {
+        stats.clip_ops.A += 3;  // d = eye - p
+        stats.clip_ops.C += 1;  // f > 0
+      }
+      if (dir &&
+          !((f = directional_light(*dir, view.eye - wobject.light_positions[i], s.colour, stats.clip_ops)) > 0)) {
         ++stats.light_points_outside_beam;
         continue;
       }
       const ScreenVertex c = project(e, lp.intensity, tan_half_fov);
+      // As a vertex's projection (project_ops), then Ds = D/(t z): 1 M + 1 D + 2 C (min, max);
+      // I f: 1 M; Ds written too.
+      project_ops(stats, 1);
+      stats.clip_ops.M += 1 + 1;
+      stats.clip_ops.D += 1;
+      stats.clip_ops.C += 2;
+      stats.clip_ops.L += 1;
       s.xs = c.xs;
       s.ys = c.ys;
       s.zs = c.zs;
@@ -136,7 +199,12 @@ struct ChannelGeometry {
 
   // Back-face cull, trivial reject, clip and project one polygon; false when nothing is left.
   bool polygon(const Polygon& poly, const WorldSubobject& w, std::uint32_t pi, ScreenPolygon& sp) {
-    // Back face: the observer is not on the front side of the polygon's plane.
+    // Back face: the observer is not on the front side of the polygon's plane. Processor 1:
+    // the plane read (4 L), n . eye (3 M + 2 A), the test (1 C).
+    stats.transform_ops.L += 4;
+    stats.transform_ops.M += 3;
+    stats.transform_ops.A += 2;
+    stats.transform_ops.C += 1;
     if (glm::dot(w.face_normal[pi], view.eye) <= w.face_offset[pi]) {
       ++stats.backfacing;
       return false;
@@ -146,6 +214,10 @@ struct ChannelGeometry {
       all &= code[i];
       any |= code[i];
     }
+    const std::uint64_t n = poly.indices.size();
+    stats.clip_ops.L += n;      // outcodes read
+    stats.clip_ops.O += 2 * n;  // AND, OR
+    stats.clip_ops.C += 1;      // all outside one plane?
     if (all) {
       ++stats.outside;
       return false;
@@ -153,16 +225,27 @@ struct ChannelGeometry {
     ClipPolygon cp;
     for (std::size_t k = 0; k < poly.indices.size(); ++k)
       cp.v[cp.n++] = {eye[poly.indices[k]], w.corner_intensity[w.first_corner[pi] + k]};
+    stats.clip_ops.L += 4 * n;  // eye and intensity into the clipping buffer
+    stats.clip_ops.C += 1;      // any plane crossed?
     if (any) {
       ++stats.clipped;
-      if (!clip_polygon(cp, pyramid, any)) {
+      ClipCount count;
+      const bool kept = clip_polygon(cp, pyramid, any, count);
+      stats.clip_ops += count.ops;
+      stats.clip_intersections += count.intersections;
+      if (!kept) {
         ++stats.outside;
         return false;
       }
     }
     sp.vertices.reserve(std::size_t(cp.n));
     for (int k = 0; k < cp.n; ++k) sp.vertices.push_back(project(cp.v[k].eye, cp.v[k].intensity, tan_half_fov));
+    project_ops(stats, std::uint64_t(cp.n));
     // Polygons seen exactly edge-on (or clipped to a sliver of no area) cover nothing.
+    // Per vertex a.xs b.ys - b.xs a.ys summed: 2 M + 2 A; the test: 1 C.
+    stats.clip_ops.M += 2 * std::uint64_t(cp.n);
+    stats.clip_ops.A += 2 * std::uint64_t(cp.n);
+    stats.clip_ops.C += 1;
     double area2 = 0;
     for (int k = 0; k < cp.n; ++k) {
       const auto& a = sp.vertices[std::size_t(k)];
@@ -184,6 +267,13 @@ struct ChannelGeometry {
       eye[i] = view.to_eye(w.vertices[i]);
       code[i] = pyramid.outcode(eye[i]);
     }
+    const std::uint64_t n = w.vertices.size();
+    stats.vertices_transformed += n;
+    eye_transform_ops(stats.transform_ops, n);
+    stats.clip_ops.L += 4 * n;  // outcode: the eye read (3 L), 5 x (3 M + 3 A + 1 C), written (1 L)
+    stats.clip_ops.M += 15 * n;
+    stats.clip_ops.A += 15 * n;
+    stats.clip_ops.C += 5 * n;
     stats.polygons_in += sub.polygons.size();
     if (sub.bsp.empty()) {  // the modeller's list as it is
       for (std::uint32_t pi = 0; pi < sub.polygons.size(); ++pi) emit(sub, w, object_index, si, pi);
@@ -217,7 +307,7 @@ struct ChannelGeometry {
 // f.polygons drawn on it (the first is EyeFace::polygon). A world plane n.p = D becomes, for e = R (p - eye),
 // (R n).e = D - n.eye; the y flip changes n and e alike.
 void eye_polyhedra(const Scene& scene, const WorldDatabase& db, const ChannelView& view, const PriorityList& list,
-                   ScreenFrame& f) {
+                   ScreenFrame& f, OperationCounts& transform_ops) {
   std::vector<std::int32_t> slot(scene.objects.size(), -1);  // object -> its entry in f.polyhedra
   for (const PriorityEntry& entry : list.objects) {
     const std::uint32_t o = entry.object;
@@ -234,6 +324,9 @@ void eye_polyhedra(const Scene& scene, const WorldDatabase& db, const ChannelVie
       face.nz = n.z;
       face.d = w.hull_offset[k] - glm::dot(w.hull_normal[k], view.eye);
       p.faces.push_back(face);
+      transform_ops.M += 9 + 3;  // R n: 9 M + 6 A; D - n . eye: 3 M + 3 A (processor 1)
+      transform_ops.A += 6 + 3;
+      transform_ops.L += 4 + 4;  // plane read, eye plane written
     }
     f.polyhedra.push_back(std::move(p));
   }
@@ -279,7 +372,7 @@ ScreenFrame process_channel(const Scene& scene, const WorldDatabase& db, const C
   f.tan_half_fov = view.tan_half_fov;
   f.near = view.near;
   f.lists_polyhedra = db.has_polyhedra;
-  if (db.has_polyhedra) eye_polyhedra(scene, db, view, list, f);
+  if (db.has_polyhedra) eye_polyhedra(scene, db, view, list, f, stats.transform_ops);
   stats.polygons_out += f.polygons.size();
   stats.light_points_out += f.light_points.size();
   stats.ms += ms_since(t0);

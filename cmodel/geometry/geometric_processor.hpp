@@ -28,6 +28,35 @@ struct PriorityWalkCost {
   }
 };
 
+// Stage B on seed 001's two "Электроника МТ-70М" processors in a pipeline, counted in seed 000's
+// units as the code runs (cmodel/timing/geometry_timing.hpp times them). The first does the matrix
+// work, the second clipping and the perspective division (with the added divider):
+//   transform_ops (processor 1)
+//     per vertex and per light point   eye = B (p - eye): 3 A, then 9 M + 6 A (dmat3 * dvec3);
+//                                      3 L read, 3 L written to the real-number channel
+//     per polygon, back-face test      n . eye > D: 4 L (plane), 3 M + 2 A, 1 C. On processor 1:
+//                                      a matrix-row-like product on world data, and a back face
+//                                      culled there never crosses the channel
+//     per polyhedron face (stage F)    R n: 9 M + 6 A; D - n . eye: 3 M + 3 A; 4 L read, 4 L written
+//   clip_ops (processor 2)
+//     per vertex and per light point   outcode, 5 planes x (3 M + 3 A + 1 C), the general
+//                                      a x + b y + c z + d the code evaluates; 3 L (eye) read,
+//                                      1 L (outcode) written; a light point: no outcode kept, 1 C
+//                                      (inside?)
+//     per front-facing polygon         per vertex 1 L (outcode) + 2 O (AND, OR); 1 C (all outside?);
+//                                      then 4 L per vertex (eye, intensity) and 1 C (any outside?)
+//     per polygon clipped              1 C per plane (its bit), and per plane clipped against as
+//                                      clip.cpp counts: per edge 6 M + 6 A + 2 C, per intersection
+//                                      9 A + 4 M + 1 D + 4 L, per kept vertex 4 L
+//     per projected vertex             x/(t z), -y/(t z): 2 M + 2 D (the code forms t z twice),
+//                                      2 clamps 4 C, 4 L written (Xs, Ys, Zs, Is); 1 division
+//     per projected polygon            area: 2 M + 2 A per vertex, 1 C
+//     per light point projected        as a vertex, plus Ds = D/(t z): 1 M + 1 D + 2 C (min, max),
+//                                      I f: 1 M, 5 L written instead of 4; 1 division
+//     per directional light            see directional_light (geometric_processor.cpp); sqrt and
+//                                      atan2 count as 1 D each (the divider's iteration: an assumption,
+//                                      seed 000's units have no function kind)
+// Not counted here: the priority-tree walk (bsp below, its own record).
 struct GeometryStats {
   std::uint64_t polygons_in = 0;  // polygons of the visible subobjects
   std::uint64_t backfacing = 0;   // culled as back faces
@@ -42,6 +71,10 @@ struct GeometryStats {
   // operations in seed 000's units (walk_priority_tree counts them).
   std::uint64_t bsp_subobjects = 0;
   PriorityWalkCost bsp;
+  OperationCounts transform_ops, clip_ops;  // processors 1 and 2 (above)
+  std::uint64_t vertices_transformed = 0;   // subobject vertices to eye space (light points: light_points_in)
+  std::uint64_t clip_intersections = 0;     // vertices made on crossing edges
+  std::uint64_t divisions = 0;              // points through the perspective division (vertices, light centres)
   double ms = 0;
 };
 

@@ -22,15 +22,13 @@
 #include "hls/segment/span_piece_edges.hpp"
 #include "hls/segment/video_channel.hpp"
 #include "segment/double_arith.hpp"
+#include "timing/segment_cycle_model.hpp"
+#include "timing/segment_prediction.hpp"
+#include "timing/timing_report.hpp"
 
 namespace cig {
 
 namespace {
-
-// Seed 001 timings, for the report's estimate of the segment processor's time per frame.
-constexpr double kEdgeFormationUs = 10.0;  // per edge, at most
-constexpr double kSegmentWriteNs = 400.0;
-constexpr double kSegmentReadNs = 200.0;
 
 // ---- The fixed/double twin adaptation -------------------------------------------------------------
 // Front<P>: what differs between the bit-accurate processor (the formatter kernel, the coding table,
@@ -143,10 +141,13 @@ class SegmentProcessor {
   // seed_quadrilateral: the seed's four-X segment (x-rows=2); seed_interpolation: the seed's I and
   // Z at segment ends (eq. 3-4), interpolated along the row (interp=seed), instead of the planes.
   // side_log2: S = 2^t sample rows per line and samples per row of a pixel.
-  SegmentProcessor(bool seed_quadrilateral, bool seed_interpolation, int side_log2) : SegmentProcessor() {
+  // budget_ms > 0: the governor's time budget for the field passes (timing/segment_prediction.hpp).
+  SegmentProcessor(bool seed_quadrilateral, bool seed_interpolation, int side_log2, double budget_ms = 0)
+      : SegmentProcessor() {
     seed_quadrilateral_ = seed_quadrilateral;
     seed_interpolation_ = seed_interpolation;
     side_log2_ = side_log2;
+    budget_ms_ = budget_ms;
   }
 
   // The raster's log2 and the frame's counts against the hardware's (InputError).
@@ -198,6 +199,9 @@ class SegmentProcessor {
 
   // Workers for the video channel's lines (EngineOptions::threads): the same bits.
   void set_threads(int threads) { threads_ = std::max(1, threads); }
+
+  // The last frame's records as the cycle model takes them.
+  const SegmentLoad& load() const { return load_; }
 
   // One rendering pipeline's part (seed 000's Nc): formatter, edge and segment generators into its
   // own frame and segment memories, and its video tables; the video stage (merge_parts) reads it.
@@ -269,6 +273,12 @@ class SegmentProcessor {
     long dropped_by_code[hls::kAreaCodes] = {};
     long read = 0, max_per_line = 0;
     double front_ms = 0, middle_ms = 0, video_ms = 0;
+    // The governor's input: the frame memory's records (their ids) and the light points' segments.
+    std::vector<PlannedRecord> planned_polygons, planned_lights;
+    std::vector<long> planned_ids;
+    int memory_threshold = 0;  // the overload threshold the segment memory alone sets
+    double predicted_ns = 0, predicted_ungoverned_ns = 0;
+    double predicted_next_ns = 0;  // at the threshold above the governor's (it did not fit), or 0
   };
 
   // A light point formatted and cut into segments by the coding table (into light_out_).
@@ -282,7 +292,16 @@ class SegmentProcessor {
   void store(const hls::PolygonEdges<P>& edges, FrameStats& st) {
     if (!hls::frame_memory_write(edges, *frame_memory_)) return;
     hls::overload_count(edges.h, st.counts);
-    st.edges_stored += long(edges.h.left_count.value() + edges.h.right_count.value());
+    const auto edge_words = edges.h.left_count.value() + edges.h.right_count.value();
+    st.edges_stored += long(edge_words);
+    if (budget_ms_ > 0) {
+      st.planned_polygons.push_back(
+          {std::uint32_t(edge_words),
+           {std::uint32_t(edges.h.segments_even.value()), std::uint32_t(edges.h.segments_odd.value())},
+           int(edges.h.area_code.value()),
+           false});
+      st.planned_ids.push_back(long(edges.h.id.value()));
+    }
     st.protected_polygons += edges.h.protect ? 1 : 0;
   }
 
@@ -318,27 +337,64 @@ class SegmentProcessor {
     // threshold makes the frame's segments fit).
     for (std::size_t li = 0; li < frame.light_points.size(); ++li) {
       const int k = light_segments_of(frame, li, log2);
-      for (int s = 0; s < k; ++s) ++st.light_segments_field[light_out_[s].line.value() & 1];
+      std::uint32_t per_field[2] = {0, 0};
+      for (int s = 0; s < k; ++s) ++per_field[light_out_[s].line.value() & 1];
+      if (budget_ms_ > 0) st.planned_lights.push_back({0, {per_field[0], per_field[1]}, 0, true});
+      for (int f = 0; f < 2; ++f) st.light_segments_field[f] += long(per_field[f]);
     }
     for (int f = 0; f < 2; ++f)
       st.counts.segments[f][0] = hls::UInt<24>(st.counts.segments[f][0].value() + st.light_segments_field[f]);
-    st.threshold = hls::overload_threshold_top(st.counts, hls::kSegmentBankWords);
+    st.threshold = st.memory_threshold = hls::overload_threshold_top(st.counts, hls::kSegmentBankWords);
+    if (budget_ms_ > 0) govern(frame, st);
+  }
+
+  // The governor: the largest threshold whose field passes, the cycle model run on the records in
+  // the order the preprocessor will read them, fit the budget (timing/segment_prediction.hpp).
+  void govern(const ScreenFrame& frame, FrameStats& st) const {
+    std::vector<PlannedRecord> plan;
+    plan.reserve(st.planned_polygons.size() + st.planned_lights.size());
+    const std::vector<std::size_t> lights = lights_by_priority(frame);
+    std::size_t next = 0;
+    auto lights_before = [&](long id) {
+      for (; next < lights.size() && frame.light_points[lights[next]].priority <= id; ++next)
+        plan.push_back(st.planned_lights[lights[next]]);
+    };
+    for (std::size_t k = 0; k < st.planned_polygons.size(); ++k) {
+      lights_before(st.planned_ids[k]);
+      plan.push_back(st.planned_polygons[k]);
+    }
+    lights_before(long(frame.polygons.size()));
+    const SegmentTimingParams p;
+    st.predicted_ungoverned_ns = planned_back_ns(plan, frame.raster, st.memory_threshold, p);
+    st.threshold = governed_threshold(plan, frame.raster, budget_ms_ * 1e6, st.memory_threshold, p);
+    st.predicted_ns = planned_back_ns(plan, frame.raster, st.threshold, p);
+    if (st.threshold < st.memory_threshold)
+      st.predicted_next_ns = planned_back_ns(plan, frame.raster, st.threshold + 1, p);
+  }
+
+  // The light points in the order the Y sorter takes them (stable by priority): each before the
+  // first polygon whose id is not below its priority.
+  static std::vector<std::size_t> lights_by_priority(const ScreenFrame& frame) {
+    std::vector<std::size_t> order(frame.light_points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return frame.light_points[a].priority < frame.light_points[b].priority;
+    });
+    return order;
   }
 
   // Preprocessor + segment generator + light coding table, into the Y sorter in priority order.
   void generate_and_sort(const ScreenFrame& frame, int log2, FrameStats& st) {
     hls::y_sorter_reset(*segment_memory_, frame.raster);
-    std::vector<std::size_t> light_order(frame.light_points.size());
-    std::iota(light_order.begin(), light_order.end(), 0);
-    std::stable_sort(light_order.begin(), light_order.end(), [&](std::size_t a, std::size_t b) {
-      return frame.light_points[a].priority < frame.light_points[b].priority;
-    });
+    start_load(frame.raster, st);
+    const std::vector<std::size_t> light_order = lights_by_priority(frame);
     std::size_t next_light = 0;
     auto emit_lights_before = [&](long priority) {
       for (; next_light < light_order.size() && frame.light_points[light_order[next_light]].priority <= priority;
            ++next_light) {
         const int k = light_segments_of(frame, light_order[next_light], log2);
-        for (int s = 0; s < k; ++s) hls::y_sort(light_out_[s], *segment_memory_);
+        load_.items.push_back({0, {0, 0}, true, false});
+        for (int s = 0; s < k; ++s) sort_segment(light_out_[s]);
         st.light_segments += k;
       }
     };
@@ -348,6 +404,10 @@ class SegmentProcessor {
       emit_lights_before(long(edges.h.id.value()));
       tables_->polygon_planes[edges.h.id.value()] = edges.h.planes;
       const int code = int(edges.h.area_code.value());
+      load_.items.push_back({std::uint32_t(edges.h.left_count.value() + edges.h.right_count.value()),
+                             {0, 0},
+                             false,
+                             code > st.threshold});
       if (code > st.threshold) {
         ++st.dropped_overload;
         ++st.dropped_by_code[code];
@@ -356,10 +416,28 @@ class SegmentProcessor {
       hls::Segment<P>(&out)[hls::kMaxLines] = *reinterpret_cast<hls::Segment<P>(*)[hls::kMaxLines]>(segments_.get());
       const int k = hls::generate_segments<P>(edges, log2, hls::UInt<3>(std::uint64_t(frame.channel & 7)),
                                               seed_quadrilateral_, out, side_log2_);
-      for (int s = 0; s < k; ++s) hls::y_sort(out[s], *segment_memory_);
+      for (int s = 0; s < k; ++s) sort_segment(out[s]);
       st.polygon_segments += k;
     }
     emit_lights_before(long(frame.polygons.size()));
+    for (int line = 0; line < frame.raster; ++line)
+      load_.line_segments[std::size_t(line)] = std::uint32_t(segment_memory_->count[line].value());
+  }
+
+  // Stage D in time (timing/segment_cycle_model.hpp): the frame memory's records as the
+  // preprocessor reads them, each one's stored segments per field, and each line's last writer.
+  void start_load(int raster, const FrameStats& st) {
+    load_.raster_lines = raster;
+    load_.edges_formed = std::uint64_t(st.edges_stored);
+    load_.items.clear();
+    load_.line_segments.assign(std::size_t(raster), 0);
+    load_.line_last_item.assign(std::size_t(raster), -1);
+  }
+  void sort_segment(const hls::Segment<P>& seg) {
+    if (!hls::y_sort(seg, *segment_memory_)) return;  // the bank was full: nothing written
+    const int line = int(seg.line.value());
+    ++load_.items.back().segments[line & 1];
+    load_.line_last_item[std::size_t(line)] = std::int32_t(load_.items.size() - 1);
   }
 
   // The video channel's tables for a frame (fog, fog colour, background, interpolation mode).
@@ -443,19 +521,36 @@ class SegmentProcessor {
                        {"read_by_video", st.read}};
     rep["light_points"] = frame.light_points.size();
     rep["dropped"] = dropped(st.dropped_overload);
-    // Seed timings: edge formation <= 10 us per edge, 400 ns per segment written, 200 ns read.
-    const double est_ms = (st.edges_stored * kEdgeFormationUs + stored * kSegmentWriteNs * 1e-3) * 1e-3;
-    rep["hardware_ms"] = est_ms;  // the modelled hardware time of the frame (cig sweep)
-    rep["seed_timing"] = {{"segment_processor_ms", est_ms},
-                          {"video_read_ms", st.read * kSegmentReadNs * 1e-6},
-                          {"fits_40ms_frame", est_ms <= 40.0}};
+    // Stage D in time (timing/segment_cycle_model.hpp). Its two frame-level stages, the edge
+    // generator (beside stage B) and the field passes, each take a frame; the slower bounds the rate.
+    const SegmentFrameTiming t = time_segment_frame({load_});
+    rep["hardware_ms"] = std::max(t.front_ns, t.back_ns) * 1e-6;  // the modelled hardware time (cig sweep)
+    rep["cycle_model"] = segment_timing_json(t);
+    if (budget_ms_ > 0) rep["governor"] = governor_report(st, t);
     rep["front_ms"] = st.front_ms;
     rep["segments_ms"] = st.middle_ms;
     rep["video_ms"] = st.video_ms;
     return rep;
   }
 
+  // What the governor predicted and did, against the cycle model's time of the same frame.
+  nlohmann::ordered_json governor_report(const FrameStats& st, const SegmentFrameTiming& t) const {
+    long dropped = 0;
+    for (int c = st.threshold + 1; c <= st.memory_threshold; ++c) dropped += st.dropped_by_code[c];
+    return {{"budget_ms", budget_ms_},
+            {"memory_threshold", st.memory_threshold},
+            {"threshold", st.threshold},
+            {"polygons_dropped", dropped},
+            {"predicted_ungoverned_ms", st.predicted_ungoverned_ns * 1e-6},
+            {"predicted_ms", st.predicted_ns * 1e-6},
+            {"predicted_at_next_threshold_ms", st.predicted_next_ns * 1e-6},
+            {"modelled_ms", t.back_ns * 1e-6},
+            {"prediction_error", t.back_ns > 0 ? st.predicted_ns / t.back_ns - 1 : 0.0},
+            {"over_budget", t.back_ns > budget_ms_ * 1e6}};
+  }
+
   hls::Segment<P> light_out_[hls::kMaxLightSegments];
+  SegmentLoad load_;  // the last frame's, for the cycle model
   std::unique_ptr<hls::FrameMemory<P>> frame_memory_;
   std::unique_ptr<hls::SegmentMemory<P>> segment_memory_;
   std::unique_ptr<hls::VideoTables<P>> tables_;
@@ -466,18 +561,21 @@ class SegmentProcessor {
   bool seed_interpolation_ = false;
   int side_log2_ = hls::kDefaultSideLog2;
   int threads_ = 1;
+  double budget_ms_ = 0;
 };
 
 template <class P>
 class SegmentEngine : public RasterEngine {
  public:
-  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp, int side_log2, int threads)
+  SegmentEngine(const char* name, const char* format, bool quad, bool seed_interp, int side_log2, int threads,
+                double budget_ms)
       : name_(name),
         format_(format),
         side_log2_(side_log2),
         quad_(quad),
         interp_(seed_interp),
-        processor_(quad, seed_interp, side_log2) {
+        budget_ms_(budget_ms),
+        processor_(quad, seed_interp, side_log2, budget_ms) {
     processor_.set_threads(threads);
   }
   const char* name() const override { return name_; }
@@ -497,7 +595,8 @@ class SegmentEngine : public RasterEngine {
     EngineRun run;
     run.report = {{"engine", name_}, {"format", format_}, {"samples_per_pixel", 1 << (2 * side_log2_)}};
     rasterise_parts(
-        parts_, parts, [&] { return std::make_unique<SegmentProcessor<P>>(quad_, interp_, side_log2_); }, run.report);
+        parts_, parts, [&] { return std::make_unique<SegmentProcessor<P>>(quad_, interp_, side_log2_, budget_ms_); },
+        run.report);
     std::vector<SegmentProcessor<P>*> pipes;
     for (std::size_t k = 0; k < parts.size(); ++k) pipes.push_back(parts_[k].get());
     const auto t0 = Clock::now();
@@ -509,6 +608,11 @@ class SegmentEngine : public RasterEngine {
       for (const auto& item : part["dropped"].items())
         total[item.key()] = total.value(item.key(), 0L) + item.value().template get<long>();
     run.report["dropped"] = total;
+    std::vector<SegmentLoad> loads;
+    for (std::size_t k = 0; k < parts.size(); ++k) loads.push_back(parts_[k]->load());
+    const SegmentFrameTiming t = time_segment_frame(loads);
+    run.report["hardware_ms"] = std::max(t.front_ns, t.back_ns) * 1e-6;
+    run.report["cycle_model"] = segment_timing_json(t);
     return run;
   }
   bool renders_parts() const override { return true; }
@@ -521,9 +625,28 @@ class SegmentEngine : public RasterEngine {
   const char* format_;
   int side_log2_;
   bool quad_, interp_;
+  double budget_ms_;
   SegmentProcessor<P> processor_;
   std::vector<std::unique_ptr<SegmentProcessor<P>>> parts_;  // --pipelines: one per part
 };
+
+}  // namespace
+
+namespace {
+
+// budget-ms=off | MS: a time budget in ms, > 0 and finite.
+void check_budget(const std::string& value) {
+  if (value == "off") return;
+  std::size_t used = 0;
+  double ms = 0;
+  try {
+    ms = std::stod(value, &used);
+  } catch (const std::exception&) { used = 0; }
+  if (used != value.size() || !(ms > 0) || !(ms <= 1e6))
+    throw InputError("", "budget-ms", "'" + value + "' is not off or a number of ms in (0, 1e6]");
+}
+
+double budget_of(const EngineSettings& s) { return s.is("budget-ms", "off") ? 0.0 : std::stod(s.text("budget-ms")); }
 
 }  // namespace
 
@@ -539,6 +662,9 @@ std::vector<EngineOptionSpec> segment_engine_options(bool twin) {
                     "plane: perspective-correct planes of I and 1/Z; seed: eq. 3-4's I and Z at the segment "
                     "ends"));
   specs.push_back(samples_per_pixel_option(hls::kMaxSideLog2));
+  specs.push_back(syntax_option("budget-ms", "off or MS > 0", check_budget, "off",
+                                "the governor: the overload threshold lowered until the predicted field passes fit MS "
+                                "(timing/segment_prediction.hpp)"));
   return specs;
 }
 
@@ -560,18 +686,19 @@ std::unique_ptr<RasterEngine> make_segment_engine(const EngineOptions& options, 
   const std::string format = twin ? "double" : s.text("format");
   const bool quad = s.is("x-rows", "2"), seed_interp = s.is("interp", "seed");
   const int side_log2 = s.side_log2();
+  const double budget = budget_of(s);
   if (twin)
     return std::make_unique<SegmentEngine<DoubleSegmentArith>>(engine, "double", quad, seed_interp, side_log2,
-                                                               options.threads);
+                                                               options.threads, budget);
   if (format == "coarse")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatCoarse>>>(
-        engine, hls::SegmentFormatCoarse::name, quad, seed_interp, side_log2, options.threads);
+        engine, hls::SegmentFormatCoarse::name, quad, seed_interp, side_log2, options.threads, budget);
   if (format == "medium")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatMedium>>>(
-        engine, hls::SegmentFormatMedium::name, quad, seed_interp, side_log2, options.threads);
+        engine, hls::SegmentFormatMedium::name, quad, seed_interp, side_log2, options.threads, budget);
   if (format == "fine")
     return std::make_unique<SegmentEngine<hls::FixedSegmentArith<hls::SegmentFormatFine>>>(
-        engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2, options.threads);
+        engine, hls::SegmentFormatFine::name, quad, seed_interp, side_log2, options.threads, budget);
   throw std::logic_error("segment format " + format + " has no table row");
 }
 

@@ -25,6 +25,8 @@ ALLOWED = {
     "hls/invparam": {"hls/types", "hls/formatter"},  # stage F (seed 002): the sample lattice's size only
     # C model, in pipeline order
     "cmodel/common": set(),
+    # the machine in time: cycle and operation models fed by the stages' counts (plain records)
+    "cmodel/timing": {"cmodel/common"},
     "cmodel/scene": {"cmodel/common"},
     "cmodel/manager": {"cmodel/common", "cmodel/scene", "hls/types", "hls/manager"},  # stage A, V[i] by its kernel
     "cmodel/frame": {"cmodel/common", "cmodel/scene"},                        # B -> engines record
@@ -40,7 +42,7 @@ ALLOWED = {
                          "cmodel/image", "cmodel/engine", "hls/types", "hls/formatter"},
     "cmodel/segment": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                        "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
-                       "hls/pixel", "hls/segment"},                                         # stage D
+                       "hls/pixel", "hls/segment", "cmodel/timing"},                        # stage D
     "cmodel/quadtree": {"cmodel/common", "cmodel/scene", "cmodel/frame", "cmodel/formatter",
                         "cmodel/image", "cmodel/engine", "cmodel/pixel", "hls/types", "hls/formatter",
                         "hls/pixel", "hls/quadtree"},                                       # stage E
@@ -50,12 +52,12 @@ ALLOWED = {
     "cmodel/registry": {"cmodel/common", "cmodel/frame", "cmodel/image", "cmodel/engine",
                         "cmodel/reference", "cmodel/segment", "cmodel/quadtree", "cmodel/invparam"},  # every engine
     "cmodel/generator": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/geometry",
-                        "cmodel/frame", "cmodel/image", "cmodel/engine", "cmodel/registry"},
+                        "cmodel/frame", "cmodel/image", "cmodel/engine", "cmodel/registry", "cmodel/timing"},
     # import of foreign airport data (`cig import`): builds scene content, uses nothing after it
     "cmodel/import": {"cmodel/common", "cmodel/scene"},
     # seed-reproduction studies: above every stage and engine, below the CLI; nothing but the CLI
     # (and verif/) includes them, so a study can change without touching the data path
-    "cmodel/studies": {"cmodel/common", "cmodel/scene", "cmodel/manager", "cmodel/frame", "cmodel/geometry",
+    "cmodel/studies": {"cmodel/common", "cmodel/timing", "cmodel/scene", "cmodel/manager", "cmodel/frame", "cmodel/geometry",
                        "cmodel/formatter", "cmodel/image", "cmodel/engine", "cmodel/pixel", "cmodel/reference",
                        "cmodel/segment", "cmodel/quadtree", "cmodel/invparam", "hls/*"},
     "cmodel/cli": {"cmodel/*"},                                                # every command
