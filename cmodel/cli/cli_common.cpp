@@ -143,6 +143,15 @@ std::vector<int> selected_channels(const Scene& scene, int channel) {
   return channels;
 }
 
+std::unique_ptr<RasterEngine> probe_engine(const std::string& engine, const EngineOptions& options, const Scene& scene,
+                                           int pipelines) {
+  auto probe = make_engine(engine, options);
+  probe->check_raster(scene.raster);
+  probe->check_scene(scene);
+  if (pipelines > 1) probe->check_renders_parts();
+  return probe;
+}
+
 std::string report_text(const nlohmann::ordered_json& report) {
   nlohmann::ordered_json with;
   with["provenance"] = provenance_json();

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,11 @@ std::string drop_warning(const nlohmann::ordered_json& engine_report, const std:
 
 // The channels a command works on: all, or --channel C (InputError when the scene lacks it).
 std::vector<int> selected_channels(const Scene& scene, int channel);
+
+// The engine a command renders the scene with, checked against the scene before any work: its
+// raster, its content, and rendering pipelines when pipelines > 1 (InputError).
+std::unique_ptr<RasterEngine> probe_engine(const std::string& engine, const EngineOptions& options, const Scene& scene,
+                                           int pipelines);
 
 // The frames to process: --frames A:B, --frame K, or frame 0; checked against the path.
 inline void frame_range(const std::string& frames_text, int frame_k, bool frame_given, int frame_count,

@@ -29,6 +29,13 @@ bool engine_governs_itself(const std::string& engine) { return engine_takes(engi
 
 }  // namespace
 
+FrameTiming frame_timing_of(int frame, int raster, const std::vector<ChannelOutput>& outs,
+                            const MachineTimingParams& p) {
+  std::vector<ChannelTiming> channels;
+  for (const ChannelOutput& co : outs) channels.push_back(time_channel(co.report, raster, p));
+  return time_frame(frame, channels, p);
+}
+
 void refuse_engine_budget(const EngineOptions& options) {
   const auto b = options.params.find("budget-ms");
   if (b != options.params.end() && b->second != "off")
@@ -57,12 +64,11 @@ GovernedFrame GovernedRun::render(int frame, const std::vector<int>& channels, i
   plain = plain_.render(frame, channels, engine_, plain_options_, threads, pipelines);
   governed = governed_.render(frame, channels, engine_, governed_options_, threads, pipelines, &governor_);
   GovernedFrame g;
-  std::vector<ChannelTiming> u, v;
-  for (std::size_t k = 0; k < plain.size(); ++k) {
+  g.ungoverned = frame_timing_of(frame, scene_.raster, plain, params_);
+  g.governed = frame_timing_of(frame, scene_.raster, governed, params_);
+  for (std::size_t k = 0; k < governed.size(); ++k) {
     const nlohmann::ordered_json& r = governed[k].report;
-    u.push_back(time_channel(plain[k].report, scene_.raster, params_));
-    v.push_back(time_channel(r, scene_.raster, params_));
-    const ChannelTiming& t = v.back();
+    const ChannelTiming& t = g.governed.channels[k];
     const nlohmann::ordered_json& gov = r["governor"];
     governor_.learn(governed[k].channel, FrameGovernor::decision_of(gov), t.stages.a_ms, t.geometry_ms,
                     t.edge_generator_ms, t.stages.raster_ms);
@@ -73,8 +79,6 @@ GovernedFrame GovernedRun::render(int frame, const std::vector<int>& channels, i
       g.range = g.range > 0 ? std::min(g.range, gov["range"].get<double>()) : gov["range"].get<double>();
     if (r["raster"].contains("governor")) g.polygons_dropped += r["raster"]["governor"]["polygons_dropped"].get<long>();
   }
-  g.ungoverned = time_frame(frame, u, params_);
-  g.governed = time_frame(frame, v, params_);
   g.prediction_error = g.governed.frame_ms > 0 ? g.predicted_ms / g.governed.frame_ms - 1 : 0;
   return g;
 }

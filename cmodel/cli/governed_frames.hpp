@@ -43,6 +43,10 @@ class GovernedRun {
   FrameGovernor governor_;
 };
 
+// A frame's machine timing from its channels' reports (studies/frame_timing.hpp).
+FrameTiming frame_timing_of(int frame, int raster, const std::vector<ChannelOutput>& outs,
+                            const MachineTimingParams& p);
+
 // --engine-opt budget-ms (other than off, the engine's default) is --budget-ms's to set on render
 // and timing (InputError).
 void refuse_engine_budget(const EngineOptions& options);

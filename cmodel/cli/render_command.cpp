@@ -203,12 +203,9 @@ nlohmann::ordered_json render_report(const RenderCommand& c, const Scene& scene,
 // The machine's modelled frame time (studies/frame_timing.hpp, what `cig timing` prints), when the
 // engine has a hardware time model.
 std::optional<nlohmann::ordered_json> machine_timing(int frame, int raster, const std::vector<ChannelOutput>& outs) {
-  std::vector<ChannelTiming> channels;
-  for (const ChannelOutput& co : outs) {
+  for (const ChannelOutput& co : outs)
     if (!co.report["raster"].contains("hardware_ms")) return std::nullopt;
-    channels.push_back(time_channel(co.report, raster, {}));
-  }
-  return frame_timing_json(time_frame(frame, channels, {}));
+  return frame_timing_json(frame_timing_of(frame, raster, outs, {}));
 }
 
 }  // namespace
@@ -222,10 +219,7 @@ int RenderCommand::run() {
   int a = 0, b = 0;
   frame_range(frames_text, frame_k, frame_opt->count() > 0, scene.frame_count(), scene_file, a, b);
   const std::vector<int> channels = selected_channels(scene, channel);
-  const auto probe = make_engine(engine.engine, eo);
-  probe->check_raster(scene.raster);
-  probe->check_scene(scene);
-  if (pipelines > 1) probe->check_renders_parts();
+  const auto probe = probe_engine(engine.engine, eo, scene, pipelines);
   refuse_engine_budget(eo);
   if (report_file.empty()) report_file = (std::filesystem::path(out_dir) / "report.json").string();
   if (html) prepare_render_html(out_dir);

@@ -199,10 +199,7 @@ int TimingCommand::run() {
   int a = 0, b = scene.frame_count() - 1;
   if (!frames_text.empty()) frame_range(frames_text, -1, false, scene.frame_count(), scene_file, a, b);
   const std::vector<int> channels = selected_channels(scene, channel);
-  const auto probe = make_engine(engine.engine, eo);
-  probe->check_raster(scene.raster);
-  probe->check_scene(scene);
-  if (pipelines > 1) probe->check_renders_parts();
+  probe_engine(engine.engine, eo, scene, pipelines);
   refuse_engine_budget(eo);
   OutputPlan plan;
   plan.scene_inputs(scene);
@@ -237,9 +234,7 @@ int TimingCommand::run() {
       governed_rows.push_back(governed_frames.back().governed);
       if (!quiet) print_governed(governed_frames.back());
     } else {
-      std::vector<ChannelTiming> per_channel;
-      for (const ChannelOutput& co : outs) per_channel.push_back(time_channel(co.report, scene.raster, p));
-      rows.push_back(time_frame(frame, per_channel, p));
+      rows.push_back(frame_timing_of(frame, scene.raster, outs, p));
       if (!quiet) print_row(rows.back());
     }
     progress.step("frame " + std::to_string(frame));

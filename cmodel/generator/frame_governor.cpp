@@ -44,9 +44,10 @@ double FrameGovernor::predict_ms(int channel, std::uint64_t objects_kept, const 
 }
 
 PriorityList FrameGovernor::choose(int channel, ChannelView view, const Manage& manage, const WorldDatabase& db,
-                                   GovernorDecision& d) const {
+                                   GovernorDecision& d, SceneManagerStats* final_stats) const {
   SceneManagerStats stats;
   PriorityList list = manage(view, stats);
+  if (final_stats) *final_stats = stats;
   d.range = d.range_ungoverned = view.range;
   d.headroom = headroom_;
   d.objects_kept = stats.cull.objects_kept;
@@ -66,6 +67,7 @@ PriorityList FrameGovernor::choose(int channel, ChannelView view, const Manage& 
   view.range = lo;
   SceneManagerStats s;
   PriorityList cut = manage(view, s);
+  if (final_stats) *final_stats = s;
   d.range = lo;
   d.range_cut = true;
   d.objects_cut = list.objects.size() - std::min(list.objects.size(), cut.objects.size());

@@ -55,13 +55,13 @@ struct GovernorDecision {
 class FrameGovernor {
  public:
   FrameGovernor(double budget_ms, bool raster_governs_itself, int channels);
-  double budget_ms() const { return budget_ms_; }
 
   // The longest range (up to the view's) whose predicted stages fit; `manage` runs the scene
   // manager for a view (the governor calls it with shorter ranges).
   using Manage = std::function<PriorityList(const ChannelView&, SceneManagerStats&)>;
-  PriorityList choose(int channel, ChannelView view, const Manage& manage, const WorldDatabase& db,
-                      GovernorDecision& d) const;
+  // `stats`, when given: the scene manager's figures for the list returned.
+  PriorityList choose(int channel, ChannelView view, const Manage& manage, const WorldDatabase& db, GovernorDecision& d,
+                      SceneManagerStats* stats = nullptr) const;
 
   // After the frame: the stages' modelled ms for the work the decision let through.
   void learn(int channel, const GovernorDecision& d, double a_ms, double b_ms, double edges_ms, double raster_ms);

@@ -101,15 +101,20 @@ PriorityList ImageGenerator::manage(const ChannelView& view, nlohmann::ordered_j
 
 PriorityList ImageGenerator::manage_governed(ChannelView& view, const FrameGovernor* governor,
                                              nlohmann::ordered_json& report) const {
-  if (governor) {
-    GovernorDecision d;
-    governor->choose(
-        view.channel, view,
-        [&](const ChannelView& v, SceneManagerStats& s) { return manage_channel(db_, v, s, manager_); }, db_, d);
-    view.range = d.range;
-    report["governor"] = FrameGovernor::report(d);
-  }
-  return manage(view, report);
+  if (!governor) return manage(view, report);
+  // The governor's own manager runs give the list and its figures (ms: stage A's runs, the
+  // governor's bisection included).
+  const auto t0 = Clock::now();
+  GovernorDecision d;
+  SceneManagerStats ms;
+  PriorityList list = governor->choose(
+      view.channel, view,
+      [&](const ChannelView& v, SceneManagerStats& s) { return manage_channel(db_, v, s, manager_); }, db_, d, &ms);
+  ms.ms = ms_since(t0);
+  view.range = d.range;
+  report["scene_manager"] = manager_report(ms, manager_, *tree_);
+  report["governor"] = FrameGovernor::report(d);
+  return list;
 }
 
 ScreenFrame ImageGenerator::geometry(int frame, int channel, nlohmann::ordered_json& report,
