@@ -19,16 +19,18 @@ TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 COUNTERS = ("psnr_vs_float", "pixels_off", "polygons", "lights", "dropped")
 
 
-def load_cases(path):
+def load_cases(path, parts=2):
     """The context, the lists, {(list, renderer): {"ms": median CPU ms, "wall_ms": median wall ms,
-    "counters": {...}, "error": text}}."""
+    "counters": {...}, "error": text}}. A case's name has `parts` fields before Google Benchmark's
+    suffix: the last is the renderer, the others the list (curve/polys/1000/float: parts=4)."""
     with open(path) as f:
         doc = json.load(f)
     cases, lists = {}, []
     for b in doc["benchmarks"]:
         if b.get("run_type", "iteration") != "iteration":
             continue  # aggregates: the median is taken here, over the repetitions
-        name, renderer = b["run_name"].split("/")[:2]
+        fields = b["run_name"].split("/")[:parts]
+        name, renderer = "/".join(fields[:-1]), fields[-1]
         if name not in lists:
             lists.append(name)
         case = cases.setdefault((name, renderer), {"times": [], "wall": [], "counters": {}})
@@ -121,19 +123,28 @@ def psnr_rows(lists, cases):
     return rows + [["**lowest**"] + ["**%.1f**" % lowest[r] if r in lowest else "-" for r in renderers]]
 
 
+def provenance_arguments(ap):
+    """The options saying where and when the run was made (tools/bench.sh gives them)."""
+    for option in ("--machine", "--date", "--commit"):
+        ap.add_argument(option, required=True)
+
+
+def print_provenance(a, context, cases):
+    """Prints the machine, llvmpipe's version, the date and the commit; gives the repetitions."""
+    print("* Machine: %s; %s" % (a.machine, context.get("llvmpipe", "llvmpipe")))
+    print("* Date: %s; commit %s" % (a.date, a.commit))
+    return max((len(c["times"]) for c in cases.values()), default=0)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("json")
-    ap.add_argument("--machine", required=True)
-    ap.add_argument("--date", required=True)
-    ap.add_argument("--commit", required=True)
+    provenance_arguments(ap)
     a = ap.parse_args()
     context, lists, cases = load_cases(a.json)
-    reps = max((len(c["times"]) for c in cases.values()), default=0)
     print("# cig raster engines against Mesa llvmpipe\n")
     print("Written by `tools/bench.sh` from `bench_llvmpipe` (verif/bench/bench_llvmpipe.cpp); do not edit.\n")
-    print("* Machine: %s; %s" % (a.machine, context.get("llvmpipe", "llvmpipe")))
-    print("* Date: %s; commit %s" % (a.date, a.commit))
+    reps = print_provenance(a, context, cases)
     print("* Time: CPU time of the process per frame, median of %d repetition(s), one thread each" % reps)
     print("  (llvmpipe with LP_NUM_THREADS=0); llvmpipe draws 4N x 4N (16 samples per pixel, as the engines),")
     print("  reads back and box-filters to N x N on the CPU, all timed; the lists' stages A and B are not timed.\n")

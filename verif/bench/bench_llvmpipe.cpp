@@ -11,6 +11,12 @@
 // Threads (deliverable 3): on a few lists each engine also renders with EngineOptions::threads = 2,
 // case `<list>/<engine>@2`; tools/bench_table.py reports the wall-time speed-up over the same
 // engine's one-thread case of the same run (both cases measure wall time too).
+// Curves (issue 34, `bench_llvmpipe --curves`, tools/bench.sh --curves): instead of the table's
+// cases, cost against one size at a time, the others as in the table (512 lines, 16 samples per
+// pixel), cases `curve/<axis>/<value>/<renderer>` (curve_lists below).
+// Samples per pixel: the engines' setting spp; llvmpipe draws S N x S N and box-filters S x S for
+// spp = S^2 (1: N x N, 4: 2N, 16: 4N, 64: 8N). A case an engine cannot take fails with its reason:
+// "n/a: ..." when the engine does not take the setting, "refused: ..." when it refuses the list.
 // Counters: psnr_vs_float (dB against the float engine's image; 99 when identical), pixels_off
 // (pixels with a channel off by more than 2 LSB), polygons, dropped (polygons the segment engine's
 // overload protection or full frame memory dropped). tools/bench.sh turns the JSON output into
@@ -160,6 +166,7 @@ ScreenFrame small_triangles_list(int count, std::uint64_t seed) {
 struct List {
   std::string name;
   std::function<ScreenFrame()> build;
+  int spp = 16;  // samples per pixel: the engines' setting spp, llvmpipe's supersampling
 };
 
 std::vector<List> all_lists() {
@@ -175,6 +182,36 @@ std::vector<List> all_lists() {
   return lists;
 }
 
+// The curve family: polygon count (small triangles, 1k to 1M by factors of 4; an engine refuses
+// what is beyond its capacities), raster size (the table's airfield_f0c1 list drawn at 128 to 1024
+// lines), samples per pixel (the same list at 512 lines, 1 to 64) and depth complexity (2 to 40).
+// The lists that are also table lists are built with the table's seeds, so they are the same.
+std::vector<List> curve_lists() {
+  std::vector<List> lists;
+  for (int k : {1, 4, 16, 64, 256, 1000})
+    lists.push_back(
+        {"curve/polys/" + std::to_string(k * 1000), [=] { return small_triangles_list(k * 1000, 14100 + k); }});
+  for (int lines : {128, 256, 512, 1024})
+    lists.push_back({"curve/raster/" + std::to_string(lines), [=] {
+                       ScreenFrame f = airfield_frame(0, 1);
+                       f.raster = lines;  // the geometric processor uses the raster nowhere else
+                       return f;
+                     }});
+  for (int spp : {1, 4, 16, 64})
+    lists.push_back({"curve/spp/" + std::to_string(spp), [] { return airfield_frame(0, 1); }, spp});
+  for (int d : {2, 5, 10, 20, 40})
+    lists.push_back({"curve/depth/" + std::to_string(d), [=] { return depth_complexity_list(d, 14000 + d); }});
+  return lists;
+}
+
+// The engine's options for a list: its samples per pixel.
+EngineOptions list_options(const List& list, int threads) {
+  EngineOptions options;
+  options.threads = threads;
+  options.params["spp"] = std::to_string(list.spp);
+  return options;
+}
+
 // Built on first use (a filtered run builds only its lists), kept for the other cases of the list.
 const ScreenFrame& list_frame(const List& list) {
   static std::map<std::string, ScreenFrame> frames;
@@ -186,7 +223,8 @@ const Image& float_image(const List& list) {
   static std::map<std::string, Image> images;
   auto it = images.find(list.name);
   if (it == images.end())
-    it = images.emplace(list.name, make_engine("float", EngineOptions{})->render(list_frame(list)).out.image).first;
+    it = images.emplace(list.name, make_engine("float", list_options(list, 1))->render(list_frame(list)).out.image)
+             .first;
   return it->second;
 }
 
@@ -220,12 +258,15 @@ void run_engine(benchmark::State& state, const List& list, const std::string& na
   std::unique_ptr<RasterEngine> engine;
   EngineRun first;
   try {
-    EngineOptions options;
-    options.threads = threads;
-    engine = make_engine(name, options);
+    engine = make_engine(name, list_options(list, threads));
+  } catch (const InputError& e) {  // a setting the engine does not take
+    state.SkipWithError(("n/a: " + std::string(e.what())).c_str());
+    return;
+  }
+  try {
     first = engine->render(frame);
   } catch (const InputError& e) {  // a list beyond the engine's capacities
-    state.SkipWithError(e.what());
+    state.SkipWithError(("refused: " + std::string(e.what())).c_str());
     return;
   }
   for (auto _ : state) {
@@ -241,21 +282,25 @@ LlvmpipeRenderer& llvmpipe() {
   return renderer;
 }
 
-// The first render of a list also compiles llvmpipe's shader variants (untimed).
+// The first render of a list also compiles llvmpipe's shader variants (untimed). spp = S^2: S x S
+// samples a pixel.
 void run_llvmpipe(benchmark::State& state, const List& list) {
   LlvmpipeRenderer& renderer = llvmpipe();
   const ScreenFrame& frame = list_frame(list);
-  const Image first = renderer.render(frame);
+  const int side = int(std::lround(std::sqrt(double(list.spp))));
+  const Image first = renderer.render(frame, side);
   for (auto _ : state) {
-    Image image = renderer.render(frame);
+    Image image = renderer.render(frame, side);
     benchmark::DoNotOptimize(image.rgb.data());
   }
   set_counters(state, list, first, 0);
 }
 
+bool curves = false;  // --curves: the curve family instead of the table's lists
+
 void register_all() {
   benchmark::AddCustomContext("llvmpipe", llvmpipe().version());  // into the JSON output, for RESULTS.md
-  static const std::vector<List> lists = all_lists();
+  static const std::vector<List> lists = curves ? curve_lists() : all_lists();
   for (const List& list : lists) {
     const bool threaded =
         std::find(std::begin(kThreadLists), std::end(kThreadLists), list.name) != std::end(kThreadLists);
@@ -275,6 +320,10 @@ void register_all() {
 }  // namespace cig::bench
 
 int main(int argc, char** argv) {
+  // Our own flag, taken out before Google Benchmark reads the others.
+  const auto end = std::remove_if(argv + 1, argv + argc, [](const char* a) { return std::string(a) == "--curves"; });
+  cig::bench::curves = end != argv + argc;
+  argc = int(end - argv);
   setenv("LP_NUM_THREADS", "0", 1);                // llvmpipe rasterises on the calling thread: one thread, like cig
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);  // no disk cache (and no cache thread) unless asked
   return cig::bench::run_benchmarks(argc, argv, cig::bench::register_all);

@@ -63,7 +63,8 @@ void main() {
   if (dot(d, d) > radius2) discard;
 #endif
 #ifdef SCREEN_DOOR
-  // The reference keeps sample (i, j) when i + j is even; j = 4N - 1 - row (rows run bottom up).
+  // The reference keeps sample (i, j) when i + j is even; j = SN - 1 - row (rows run bottom up;
+  // SN even: i + j is even when x + row is odd).
   if (((int(gl_FragCoord.x) + int(gl_FragCoord.y)) & 1) == 0) discard;
 #endif
   float f = clamp((1.0 / gl_FragCoord.w - fog_start) * fog_scale, 0.0, 1.0);
@@ -198,7 +199,7 @@ void LlvmpipeRenderer::build_vertices(const ScreenFrame& frame) {
       nearest = std::min(nearest, v.zs);
     }
   }
-  const double radius_scale = 4.0 * frame.raster / 4096.0 * 0.5;  // grid units -> sample radius
+  const double radius_scale = samples_ / 4096.0 * 0.5;  // grid units -> sample radius
   for (const ScreenLightPoint& l : frame.light_points) {
     light_vertices_.insert(light_vertices_.end(), {float(l.xs), float(l.ys), float(l.zs)});
     push_rgb(light_vertices_, l.colour, l.intensity);
@@ -217,7 +218,7 @@ void LlvmpipeRenderer::set_uniforms(unsigned program, const ScreenFrame& frame) 
   glUniform1f(glGetUniformLocation(program, "fog_start"), float(fog.start));
   glUniform1f(glGetUniformLocation(program, "fog_scale"), float(1.0 / (fog.end - fog.start)));
   const GLint half_size = glGetUniformLocation(program, "half_size");
-  if (half_size >= 0) glUniform1f(half_size, float(2 * frame.raster));
+  if (half_size >= 0) glUniform1f(half_size, float(samples_) / 2);
 }
 
 void LlvmpipeRenderer::draw_polygons(const ScreenFrame& frame) {
@@ -256,26 +257,27 @@ void LlvmpipeRenderer::draw_lights(const ScreenFrame& frame) {
   glDrawArrays(GL_POINTS, 0, GLsizei(light_vertices_.size() / 7));
 }
 
-// 4 x 4 box filter, rounded; GL rows run bottom up, so raster line y reads rows 4N - 1 - (4y + k).
-Image LlvmpipeRenderer::resolve(int n) {
+// S x S box filter, rounded; GL rows run bottom up, so raster line y reads rows SN - 1 - (Sy + k).
+Image LlvmpipeRenderer::resolve(int n, int side) {
   glReadPixels(0, 0, samples_, samples_, GL_RGBA, GL_UNSIGNED_BYTE, samples_rgba_.data());
   Image out(n, n);
   std::vector<unsigned> sum(std::size_t(n) * 3);
   const std::size_t row_bytes = std::size_t(samples_) * 4;
   for (int y = 0; y < n; ++y) {
     std::fill(sum.begin(), sum.end(), 0u);
-    for (int k = 0; k < 4; ++k) {
-      const std::uint8_t* row = &samples_rgba_[std::size_t(samples_ - 1 - (4 * y + k)) * row_bytes];
+    for (int k = 0; k < side; ++k) {
+      const std::uint8_t* row = &samples_rgba_[std::size_t(samples_ - 1 - (side * y + k)) * row_bytes];
       for (int x = 0; x < n; ++x)
-        for (int s = 0; s < 4; ++s) {
-          const std::uint8_t* p = row + (std::size_t(4 * x + s)) * 4;
+        for (int s = 0; s < side; ++s) {
+          const std::uint8_t* p = row + (std::size_t(side * x + s)) * 4;
           sum[3 * x] += p[0];
           sum[3 * x + 1] += p[1];
           sum[3 * x + 2] += p[2];
         }
     }
     std::uint8_t* dst = out.at(0, y);
-    for (std::size_t c = 0; c < sum.size(); ++c) dst[c] = std::uint8_t((sum[c] + 8) / 16);
+    const unsigned count = unsigned(side * side);
+    for (std::size_t c = 0; c < sum.size(); ++c) dst[c] = std::uint8_t((sum[c] + count / 2) / count);
   }
   return out;
 }
@@ -285,15 +287,15 @@ std::string LlvmpipeRenderer::version() const {
          reinterpret_cast<const char*>(glGetString(GL_VERSION));
 }
 
-Image LlvmpipeRenderer::render(const ScreenFrame& frame) {
-  resize(4 * frame.raster);
+Image LlvmpipeRenderer::render(const ScreenFrame& frame, int side) {
+  resize(side * frame.raster);
   build_vertices(frame);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glClearColor(float(frame.background.r), float(frame.background.g), float(frame.background.b), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   draw_polygons(frame);
   draw_lights(frame);
-  return resolve(frame.raster);
+  return resolve(frame.raster, side);
 }
 
 }  // namespace cig::bench

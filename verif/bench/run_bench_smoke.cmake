@@ -1,7 +1,7 @@
 # Runs one benchmark case (FILTER) of BENCH once (--benchmark_min_time=0) and checks that it exits
 # with status 0 and that its output names the case and every counter (EXPECT, a list), and that the
-# counters in MINIMA reach their floors.
-execute_process(COMMAND ${BENCH} --benchmark_min_time=0 --benchmark_filter=${FILTER}
+# counters in MINIMA reach their floors. ARGS: the benchmark's own options (a list), if any.
+execute_process(COMMAND ${BENCH} ${ARGS} --benchmark_min_time=0 --benchmark_filter=${FILTER}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${BENCH} exited with ${rc}\n${out}\n${err}")
