@@ -103,12 +103,13 @@ def reasons(points):
 
 
 def fit_rows(points, margin):
-    """Per renderer: its exponent, the range, llvmpipe's over the same points, the verdict; and the
-    engines that grow faster than llvmpipe."""
-    rows, faster = [], []
+    """Per renderer: its exponent, the range, llvmpipe's over the same points, the verdict; the
+    engines that grow faster than llvmpipe; {renderer: exponent, in bold when faster}."""
+    rows, faster, summary = [], [], {}
     for r in RENDERERS:
         pts = taken(points, r)
         k = slope(pts)
+        summary[r] = "%.2f" % k if k is not None else "-"
         if k is None:
             rows.append([r, "-", "fewer than two points", "", ""])
             continue
@@ -126,8 +127,9 @@ def fit_rows(points, margin):
             verdict = "**faster**" if k > peer + margin else "no"
             if k > peer + margin:
                 faster.append("%s (%.2f against %.2f)" % (r, k, peer))
+                summary[r] = "**%.2f**" % k
         rows.append([r, "%.2f" % k, span, "%.2f" % peer if peer is not None else "-", verdict])
-    return rows, faster
+    return rows, faster, summary
 
 
 def plot(axis, points, path):
@@ -152,6 +154,7 @@ def plot(axis, points, path):
 
 
 def axis_section(axis, points, plots, margin):
+    """The axis's lines of RESULTS.md (its plot drawn) and its exponents (fit_rows)."""
     label, unit, fixed = AXES.get(axis, (axis, axis, ""))
     values = sorted(points)
     out = ["### Time against %s (%d to %d %s)\n" % (label, values[0], values[-1], unit), "Fixed: %s.\n" % fixed]
@@ -161,13 +164,13 @@ def axis_section(axis, points, plots, margin):
     name = "curves_%s.png" % axis
     plot(axis, points, os.path.join(plots, name))
     out.append("![time against %s](%s)\n" % (label, name))
-    rows, faster = fit_rows(points, margin)
+    rows, faster, summary = fit_rows(points, margin)
     out.append("Growth exponent: slope of log time against log %s, least squares over the points taken:\n" % unit)
     out.append(table(["renderer", "exponent", "points fitted", "llvmpipe over the same points", "grows faster"],
                      rows) + "\n")
     verdict = "grows faster than llvmpipe: " + ", ".join(faster) if faster else "no engine grows faster than llvmpipe"
     out.append("**%s: %s** (margin %.2f).\n" % (label, verdict, margin))
-    return out
+    return out, summary
 
 
 def main():
@@ -188,8 +191,13 @@ def main():
     print("  engine and llvmpipe in the same run. S x S samples per pixel: the engines' setting spp = S^2;")
     print("  llvmpipe draws SN x SN and box-filters S x S (1 spp: N x N, 4: 2N, 16: 4N, 64: 8N).\n")
     order = [x for x in AXES if x in axes] + sorted((x for x in axes if x not in AXES), key=natural_key)
-    for axis in order:
-        print("\n".join(axis_section(axis, axes[axis], a.plots, a.margin)))
+    sections = [axis_section(axis, axes[axis], a.plots, a.margin) for axis in order]
+    print("Growth exponents (each axis's section says the points fitted; in bold: faster than llvmpipe over")
+    print("the same points by more than %.2f):\n" % a.margin)
+    rows = [[r] + [summary[r] for _, summary in sections] for r in RENDERERS]
+    print(table(["renderer"] + [AXES.get(x, (x, x))[1] for x in order], rows) + "\n")
+    for lines, _ in sections:
+        print("\n".join(lines))
 
 
 if __name__ == "__main__":
