@@ -338,13 +338,25 @@ class ReferenceFrame {
     float at(int i) const { return float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0)); }
   };
 
-  // Samples a..b of row j (one block) of polygon pi, each a z-buffer test and write. The block is
-  // skipped when none of its samples can be won (kBlockSamples above). Screen-door polygons
-  // visit every other sample, those with (i + j) even.
+  std::size_t block_index(int a, int j, int row0) const {
+    return std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
+  }
+
+  // True when polygon pi wins none of samples a..b of row j (one block), which is then skipped
+  // (kBlockSamples above). Under kDepth, first against the plane's largest value w_hi (at() never
+  // exceeds it; a NaN plane wins nothing either), then against the row's bound.
+  bool block_hidden(const DepthPlane& dp, int a, int b, int j, int row0, const StripWork& w) const {
+    const std::size_t blk = block_index(a, j, row0);
+    if (visibility_ == Visibility::kPriority) return w.block_owned[blk] == block_width(a);
+    const double held = w.block_w[blk] * (1 + kDepthTie);
+    return dp.w_hi <= held || dp.upper_bound(a, b, j) <= held;
+  }
+
+  // Samples a..b of row j (one block, not hidden) of polygon pi, each a z-buffer test and write.
+  // Screen-door polygons visit every other sample, those with (i + j) even.
   void draw_block_depth(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
                         StripWork& w) const {
-    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
-    if (dp.upper_bound(a, b, j) <= w.block_w[blk] * (1 + kDepthTie)) return;
+    const std::size_t blk = block_index(a, j, row0);
     const bool opaque = frame_.polygons[pi].opaque;
     const std::int32_t id = std::int32_t(pi);
     const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
@@ -371,8 +383,7 @@ class ReferenceFrame {
   // The same under kPriority: polygons come in list order, so the first to cover a sample keeps it.
   void draw_block_priority(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
                            StripWork& w) const {
-    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
-    if (w.block_owned[blk] == block_width(a)) return;
+    const std::size_t blk = block_index(a, j, row0);
     const bool opaque = frame_.polygons[pi].opaque;
     const std::int32_t id = std::int32_t(pi);
     const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
@@ -405,12 +416,20 @@ class ReferenceFrame {
       if (cov.empty) continue;
       const DepthPlane& dp = depth_plane_[pi];
       for_each_covered_run(cov, m_, row0, row1, [&](int j, const RowSpan& s, int lo, int hi) {
-        const double il = edge_intensity(cov, p, s.el, double(j), s.xl);
-        const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
-        const RowShade shade{il, s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0, s.xl};
         w.samples_covered += run_samples(p.opaque, lo, hi, j);
+        // The row's Gouraud ends (eq. 3) only once a block of the run is not hidden: a run hidden
+        // whole (most of a small triangle behind nearer ones) needs none of the three divisions.
+        RowShade shade{0, 0, 0};
+        bool shaded = false;
         for (int a = lo; a <= hi; a = (a / kBlockSamples + 1) * kBlockSamples) {
           const int b = std::min(hi, (a / kBlockSamples + 1) * kBlockSamples - 1);
+          if (block_hidden(dp, a, b, j, row0, w)) continue;
+          if (!shaded) {
+            const double il = edge_intensity(cov, p, s.el, double(j), s.xl);
+            const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
+            shade = RowShade{il, s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0, s.xl};
+            shaded = true;
+          }
           if (visibility_ == Visibility::kPriority) draw_block_priority(pi, dp, a, b, j, row0, shade, w);
           else draw_block_depth(pi, dp, a, b, j, row0, shade, w);
         }
