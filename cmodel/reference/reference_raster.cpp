@@ -80,7 +80,7 @@ DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
 // Intensity at the end of a row span on edge k (eq. 3: linear in Y along the edge; a horizontal
 // edge contributes its nearer endpoint).
 double edge_intensity(const CoverageSetup& c, const ScreenPolygon& p, int k, double y, double x) {
-  const int k1 = (k + 1) % c.n;
+  const int k1 = k + 1 == c.n ? 0 : k + 1;  // (k + 1) % n
   const double i0 = p.vertices[std::size_t(c.src[k])].is, i1 = p.vertices[std::size_t(c.src[k1])].is;
   if (c.y[k] == c.y[k1]) return std::abs(x - c.x[k]) <= std::abs(x - c.x[k1]) ? i0 : i1;
   const double t = (y - c.y[k]) / (c.y[k1] - c.y[k]);
@@ -491,7 +491,15 @@ class ReferenceFrame {
   // Resolve the strip: box filter of the side x side samples of each pixel, summed in sample
   // order. A pixel of background samples only (no polygon, no light) is background_pixel_.
   void resolve(int strip, const StripWork& w, RasterImage& out) const {
-    const int row0 = strip * strip_rows_, side = lattice_.side;
+    if (lattice_.side == kSamplesPerSide) resolve_strip<kSamplesPerSide>(strip, w, out);
+    else resolve_strip<0>(strip, w, out);
+  }
+
+  // kSide: the lattice's samples per side when known at compile time (the engines' 4 x 4, whose
+  // sample loops then unroll), 0 for any other.
+  template <int kSide>
+  void resolve_strip(int strip, const StripWork& w, RasterImage& out) const {
+    const int row0 = strip * strip_rows_, side = kSide ? kSide : lattice_.side;
     std::int32_t ids[kMaxReferenceSamplesPerSide * kMaxReferenceSamplesPerSide];
     // sample_colour's polygon case (no light) on operands held in locals: the same operations.
     const std::int32_t* owner = w.owner.data();
@@ -510,7 +518,7 @@ class ReferenceFrame {
         const std::size_t first = std::size_t(py * side - row0) * std::size_t(m_) + std::size_t(px * side);
         std::uint8_t* dst = out.image.at(px, py);
         std::int32_t& id = out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)];
-        if (w.owner[first] < 0 && background_only(w, first)) {
+        if (w.owner[first] < 0 && background_only(w, first, side)) {
           std::copy(background_pixel_, background_pixel_ + 3, dst);
           id = -1;
           continue;
@@ -523,8 +531,8 @@ class ReferenceFrame {
             const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
             const std::int32_t o = owner[idx];
             ids[nid] = o;
-            one_owner = one_owner && o == ids[0];
-            const Rgb c = light[idx] < 0 && o >= 0 ? polygon_colour(idx, o) : sample_colour(w, idx);
+            one_owner &= o == ids[0];
+            const Rgb c = light[idx] >= 0 ? sample_colour(w, idx) : o >= 0 ? polygon_colour(idx, o) : frame_.background;
             sum[0] += c.r;
             sum[1] += c.g;
             sum[2] += c.b;
@@ -534,14 +542,16 @@ class ReferenceFrame {
       }
   }
 
-  // No polygon and no light on the pixel whose first sample is `first`.
-  bool background_only(const StripWork& w, std::size_t first) const {
-    for (int sy = 0; sy < lattice_.side; ++sy)
-      for (int sx = 0; sx < lattice_.side; ++sx) {
-        const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
-        if (w.owner[idx] >= 0 || w.light[idx] >= 0) return false;
-      }
-    return true;
+  // No polygon and no light on the pixel whose first sample is `first`: every owner and light is
+  // negative (-1), so the AND of them all keeps the sign bit (no branch per sample).
+  bool background_only(const StripWork& w, std::size_t first, int side) const {
+    std::int32_t all = -1;
+    for (int sy = 0; sy < side; ++sy) {
+      const std::int32_t* owner = w.owner.data() + first + std::size_t(sy) * std::size_t(m_);
+      const std::int32_t* light = w.light.data() + first + std::size_t(sy) * std::size_t(m_);
+      for (int sx = 0; sx < side; ++sx) all &= owner[sx] & light[sx];
+    }
+    return all < 0;
   }
 
   static void store_pixel(const double* sum, int count, std::uint8_t* dst) {
