@@ -74,7 +74,7 @@ struct CoverageSetup {
     xr = -1e300;
     el = er = 0;
     for (int k = 0; k < n; ++k) {
-      const int k1 = (k + 1) % n;
+      const int k1 = k + 1 == n ? 0 : k + 1;  // (k + 1) % n without a division on every row
       const double y0 = y[k], y1 = y[k1];
       if (yr < std::min(y0, y1) || yr > std::max(y0, y1)) continue;
       double xa, xb;

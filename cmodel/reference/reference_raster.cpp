@@ -80,7 +80,7 @@ DepthPlane fit_depth_plane(const CoverageSetup& c, const ScreenPolygon& p) {
 // Intensity at the end of a row span on edge k (eq. 3: linear in Y along the edge; a horizontal
 // edge contributes its nearer endpoint).
 double edge_intensity(const CoverageSetup& c, const ScreenPolygon& p, int k, double y, double x) {
-  const int k1 = (k + 1) % c.n;
+  const int k1 = k + 1 == c.n ? 0 : k + 1;  // (k + 1) % n
   const double i0 = p.vertices[std::size_t(c.src[k])].is, i1 = p.vertices[std::size_t(c.src[k1])].is;
   if (c.y[k] == c.y[k1]) return std::abs(x - c.x[k]) <= std::abs(x - c.x[k1]) ? i0 : i1;
   const double t = (y - c.y[k]) / (c.y[k1] - c.y[k]);
@@ -338,13 +338,25 @@ class ReferenceFrame {
     float at(int i) const { return float(std::clamp(il + slope * (double(i) - xl), 0.0, 1.0)); }
   };
 
-  // Samples a..b of row j (one block) of polygon pi, each a z-buffer test and write. The block is
-  // skipped when none of its samples can be won (kBlockSamples above). Screen-door polygons
-  // visit every other sample, those with (i + j) even.
+  std::size_t block_index(int a, int j, int row0) const {
+    return std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
+  }
+
+  // True when polygon pi wins none of samples a..b of row j (one block), which is then skipped
+  // (kBlockSamples above). Under kDepth, first against the plane's largest value w_hi (at() never
+  // exceeds it; a NaN plane wins nothing either), then against the row's bound.
+  bool block_hidden(const DepthPlane& dp, int a, int b, int j, int row0, const StripWork& w) const {
+    const std::size_t blk = block_index(a, j, row0);
+    if (visibility_ == Visibility::kPriority) return w.block_owned[blk] == block_width(a);
+    const double held = w.block_w[blk] * (1 + kDepthTie);
+    return dp.w_hi <= held || dp.upper_bound(a, b, j) <= held;
+  }
+
+  // Samples a..b of row j (one block, not hidden) of polygon pi, each a z-buffer test and write.
+  // Screen-door polygons visit every other sample, those with (i + j) even.
   void draw_block_depth(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
                         StripWork& w) const {
-    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
-    if (dp.upper_bound(a, b, j) <= w.block_w[blk] * (1 + kDepthTie)) return;
+    const std::size_t blk = block_index(a, j, row0);
     const bool opaque = frame_.polygons[pi].opaque;
     const std::int32_t id = std::int32_t(pi);
     const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
@@ -371,8 +383,7 @@ class ReferenceFrame {
   // The same under kPriority: polygons come in list order, so the first to cover a sample keeps it.
   void draw_block_priority(std::size_t pi, const DepthPlane& dp, int a, int b, int j, int row0, const RowShade& shade,
                            StripWork& w) const {
-    const std::size_t blk = std::size_t(j - row0) * std::size_t(blocks_per_row()) + std::size_t(a / kBlockSamples);
-    if (w.block_owned[blk] == block_width(a)) return;
+    const std::size_t blk = block_index(a, j, row0);
     const bool opaque = frame_.polygons[pi].opaque;
     const std::int32_t id = std::int32_t(pi);
     const std::size_t row = std::size_t(j - row0) * std::size_t(m_);
@@ -405,12 +416,20 @@ class ReferenceFrame {
       if (cov.empty) continue;
       const DepthPlane& dp = depth_plane_[pi];
       for_each_covered_run(cov, m_, row0, row1, [&](int j, const RowSpan& s, int lo, int hi) {
-        const double il = edge_intensity(cov, p, s.el, double(j), s.xl);
-        const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
-        const RowShade shade{il, s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0, s.xl};
         w.samples_covered += run_samples(p.opaque, lo, hi, j);
+        // The row's Gouraud ends (eq. 3) only once a block of the run is not hidden: a run hidden
+        // whole (most of a small triangle behind nearer ones) needs none of the three divisions.
+        RowShade shade{0, 0, 0};
+        bool shaded = false;
         for (int a = lo; a <= hi; a = (a / kBlockSamples + 1) * kBlockSamples) {
           const int b = std::min(hi, (a / kBlockSamples + 1) * kBlockSamples - 1);
+          if (block_hidden(dp, a, b, j, row0, w)) continue;
+          if (!shaded) {
+            const double il = edge_intensity(cov, p, s.el, double(j), s.xl);
+            const double ir = edge_intensity(cov, p, s.er, double(j), s.xr);
+            shade = RowShade{il, s.xr > s.xl ? (ir - il) / (s.xr - s.xl) : 0.0, s.xl};
+            shaded = true;
+          }
           if (visibility_ == Visibility::kPriority) draw_block_priority(pi, dp, a, b, j, row0, shade, w);
           else draw_block_depth(pi, dp, a, b, j, row0, shade, w);
         }
@@ -472,7 +491,15 @@ class ReferenceFrame {
   // Resolve the strip: box filter of the side x side samples of each pixel, summed in sample
   // order. A pixel of background samples only (no polygon, no light) is background_pixel_.
   void resolve(int strip, const StripWork& w, RasterImage& out) const {
-    const int row0 = strip * strip_rows_, side = lattice_.side;
+    if (lattice_.side == kSamplesPerSide) resolve_strip<kSamplesPerSide>(strip, w, out);
+    else resolve_strip<0>(strip, w, out);
+  }
+
+  // kSide: the lattice's samples per side when known at compile time (the engines' 4 x 4, whose
+  // sample loops then unroll), 0 for any other.
+  template <int kSide>
+  void resolve_strip(int strip, const StripWork& w, RasterImage& out) const {
+    const int row0 = strip * strip_rows_, side = kSide ? kSide : lattice_.side;
     std::int32_t ids[kMaxReferenceSamplesPerSide * kMaxReferenceSamplesPerSide];
     // sample_colour's polygon case (no light) on operands held in locals: the same operations.
     const std::int32_t* owner = w.owner.data();
@@ -491,7 +518,7 @@ class ReferenceFrame {
         const std::size_t first = std::size_t(py * side - row0) * std::size_t(m_) + std::size_t(px * side);
         std::uint8_t* dst = out.image.at(px, py);
         std::int32_t& id = out.ids.id[std::size_t(py) * std::size_t(n_) + std::size_t(px)];
-        if (w.owner[first] < 0 && background_only(w, first)) {
+        if (w.owner[first] < 0 && background_only(w, first, side)) {
           std::copy(background_pixel_, background_pixel_ + 3, dst);
           id = -1;
           continue;
@@ -504,8 +531,8 @@ class ReferenceFrame {
             const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
             const std::int32_t o = owner[idx];
             ids[nid] = o;
-            one_owner = one_owner && o == ids[0];
-            const Rgb c = light[idx] < 0 && o >= 0 ? polygon_colour(idx, o) : sample_colour(w, idx);
+            one_owner &= o == ids[0];
+            const Rgb c = light[idx] >= 0 ? sample_colour(w, idx) : o >= 0 ? polygon_colour(idx, o) : frame_.background;
             sum[0] += c.r;
             sum[1] += c.g;
             sum[2] += c.b;
@@ -515,14 +542,16 @@ class ReferenceFrame {
       }
   }
 
-  // No polygon and no light on the pixel whose first sample is `first`.
-  bool background_only(const StripWork& w, std::size_t first) const {
-    for (int sy = 0; sy < lattice_.side; ++sy)
-      for (int sx = 0; sx < lattice_.side; ++sx) {
-        const std::size_t idx = first + std::size_t(sy) * std::size_t(m_) + std::size_t(sx);
-        if (w.owner[idx] >= 0 || w.light[idx] >= 0) return false;
-      }
-    return true;
+  // No polygon and no light on the pixel whose first sample is `first`: every owner and light is
+  // negative (-1), so the AND of them all keeps the sign bit (no branch per sample).
+  bool background_only(const StripWork& w, std::size_t first, int side) const {
+    std::int32_t all = -1;
+    for (int sy = 0; sy < side; ++sy) {
+      const std::int32_t* owner = w.owner.data() + first + std::size_t(sy) * std::size_t(m_);
+      const std::int32_t* light = w.light.data() + first + std::size_t(sy) * std::size_t(m_);
+      for (int sx = 0; sx < side; ++sx) all &= owner[sx] & light[sx];
+    }
+    return all < 0;
   }
 
   static void store_pixel(const double* sum, int count, std::uint8_t* dst) {

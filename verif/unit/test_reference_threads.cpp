@@ -1,5 +1,5 @@
 // The float reference splits an image into strips of rows over --threads workers: every split
-// gives the same image, ids and sample counts, in each of its modes (z-buffer or list order,
+// (1 to 4 workers) gives the same image, ids and sample counts, in each of its modes (z-buffer or list order,
 // snapped or not, 1 to 64 samples per pixel, screen-door polygons, light points).
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ void expect_same_for_any_threads(const ScreenFrame& frame, Visibility visibility
   };
   ReferenceStats one;
   const RasterImage expect = render(1, one);
-  for (int threads : {2, 3}) {
+  for (int threads : {2, 3, 4}) {
     ReferenceStats st;
     const RasterImage got = render(threads, st);
     const std::string what = "threads " + std::to_string(threads) + " snap " + std::to_string(snap) + " side " +
