@@ -50,25 +50,41 @@ void quad_pixel_clear(QuadPixelState<P>& st) {
   for (int c = 0; c < 3; ++c) st.sum[c] = typename P::Accum();
 }
 
-// The colour of sample s (bit S dj + di) of a pixel record when this polygon takes it: the
-// light's, when a light covers the sample from a priority position at or before the polygon's,
-// else colour x I, fog by 1/Z at the sample.
+// Whether the light cover shows at sample s instead of the polygon taking it: a light covers the
+// sample from a priority position at or before the polygon's.
 template <class P>
-void quad_sample_colour(const QuadWindow<P>& px, int s, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
-                        typename P::Sample (&colour)[3], int side_log2 = kDefaultSideLog2) {
+bool quad_light_shows(const QuadLightCover<P>& lights, int s, const QuadPolygon<P>& poly) {
+  return lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value();
+}
+
+// What a polygon's colour at sample s (bit S dj + di) of a pixel record depends on: I and the fog
+// factor of W = 1/Z at the sample (exact plane values, f + D di + E dj).
+template <class P>
+void quad_sample_shading(const QuadWindow<P>& px, int s, const QuadPixelTables<P>& t, typename P::Intensity& in,
+                         typename P::FogFactorType& fog, int side_log2 = kDefaultSideLog2) {
   const QuadPolygon<P>& poly = px.poly;
   const int di = s & ((1 << side_log2) - 1), dj = s >> side_log2;
-  if (lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value()) {
-    for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
-    return;
-  }
   const typename P::Param vi =
       P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
   const typename P::Param vw =
       P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth], poly.dp_dj[kParamInverseDepth], di, dj);
-  const typename P::Intensity in = P::intensity(vi);
-  const typename P::FogFactorType f = P::fog_factor(t.fog, vw, poly.w_exponent);
-  for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
+  in = P::intensity(vi);
+  fog = P::fog_factor(t.fog, vw, poly.w_exponent);
+}
+
+// The colour of sample s (bit S dj + di) of a pixel record when this polygon takes it: the
+// light's, when it shows (quad_light_shows), else colour x I, fog by 1/Z at the sample.
+template <class P>
+void quad_sample_colour(const QuadWindow<P>& px, int s, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
+                        typename P::Sample (&colour)[3], int side_log2 = kDefaultSideLog2) {
+  if (quad_light_shows(lights, s, px.poly)) {
+    for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
+    return;
+  }
+  typename P::Intensity in;
+  typename P::FogFactorType fog;
+  quad_sample_shading(px, s, t, in, fog, side_log2);
+  for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(px.poly.colour[c], in, fog, t.fog_colour[c]);
 }
 
 // The samples of a record that no earlier polygon owns: they become this polygon's.
@@ -77,17 +93,35 @@ inline PixelSampleMask quad_pixel_fresh(const PixelSampleMask& samples, const Pi
 }
 
 // The colour half of a record: the fresh samples' colours added to the pixel's sums. Only the
-// sums depend on it (the owned samples, and so the masks and the timing, do not).
+// sums depend on it (the owned samples, and so the masks and the timing, do not). A sample's
+// colour is a function of its I and fog factor alone (quad_sample_colour): a sample whose two
+// equal those of the record's previous shaded sample (a flat I plane and one fog code over the
+// pixel: most samples) takes that sample's colour, the same bits without the colour multipliers.
 template <class P>
 void quad_pixel_accumulate(const QuadWindow<P>& px, const PixelSampleMask& fresh, const QuadPixelTables<P>& t,
                            const QuadLightCover<P>& lights, typename P::Accum (&sum)[3],
                            int side_log2 = kDefaultSideLog2) {
   const int side = 1 << side_log2;
+  typename P::Intensity last_in = typename P::Intensity();
+  typename P::FogFactorType last_fog = typename P::FogFactorType();
+  typename P::Sample colour[3] = {};
+  bool shaded = false;  // colour is the colour at (last_in, last_fog)
   for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
     if (s >= side * side) break;
     if (!fresh.bit(s)) continue;
-    typename P::Sample colour[3];
-    quad_sample_colour(px, s, t, lights, colour, side_log2);
+    if (quad_light_shows(lights, s, px.poly)) {
+      for (int c = 0; c < 3; ++c) sum[c] = P::accumulate(sum[c], lights.colour[s][c]);
+      continue;
+    }
+    typename P::Intensity in;
+    typename P::FogFactorType fog;
+    quad_sample_shading(px, s, t, in, fog, side_log2);
+    if (!shaded || !(in == last_in) || !(fog == last_fog)) {
+      for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(px.poly.colour[c], in, fog, t.fog_colour[c]);
+      last_in = in;
+      last_fog = fog;
+      shaded = true;
+    }
     for (int c = 0; c < 3; ++c) sum[c] = P::accumulate(sum[c], colour[c]);
   }
 }
