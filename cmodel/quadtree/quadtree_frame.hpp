@@ -208,11 +208,15 @@ class PixelFrame final : public PixelSink<P> {
       resolved_.assign(pixels, 0);
       owners_scratch_.assign(std::size_t(spp_), 0);
     }
-    if (threads_ > 1) colour_jobs_.start([this](ColourJob& j) { colour(j.w, j.pix, j.fresh, j.full); });
+    pieces_ = nullptr;
+    if (threads_ > 1) colour_jobs_.start([this](ColourJob& j) { colour(*j.poly, j.f, j.pix, j.fresh, j.full); });
   }
 
   // The end of the frame's records: waits for the colour worker (before any read of the sums).
   void finish() { colour_jobs_.finish(); }
+
+  // The cycle model's pieces: the polygon constants the records' colour half reads by reference.
+  void pieces(const std::vector<hls::QuadWindow<P>>& roots) override { pieces_ = &roots; }
 
   std::uint64_t pixel(int, const QuadItem<P>& it, bool& became_full) override {
     const int x = int(it.w.x.value()), y = int(it.w.y.value());
@@ -232,14 +236,18 @@ class PixelFrame final : public PixelSink<P> {
     if (f == all) std::fill(owners, owners + spp_, id);
     else
       for (std::uint64_t m = f; m != 0; m &= m - 1) owners[__builtin_ctzll(m)] = id;
+    // The record's polygon constants are its piece's (a job points at them: the pieces outlive
+    // the colour worker's frame); the cycle model always gives the pieces (PixelSink::pieces).
+    const hls::QuadPolygon<P>& poly = pieces_ ? (*pieces_)[it.piece].poly : it.w.poly;
     if (colour_jobs_.running()) {
       ColourJob& job = colour_jobs_.push();
-      job.w = it.w;
+      job.poly = &poly;
+      for (int p = 0; p < hls::kQuadParams; ++p) job.f[p] = it.w.f[p];
       job.pix = pix;
       job.fresh = f;
       job.full = became_full;
     } else {
-      colour(it.w, pix, f, became_full);
+      colour(poly, it.w.f, pix, f, became_full);
     }
     return f;
   }
@@ -318,9 +326,11 @@ class PixelFrame final : public PixelSink<P> {
  private:
   // The colour half of a record: its fresh samples' colours into the pixel's sums; the pixel
   // resolved when the record made it full.
-  void colour(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t fresh, bool full) {
-    hls::quad_pixel_accumulate(w, hls::PixelSampleMask(fresh), *tables_, cover(pix), states_[pix].sum, side_log2_);
-    if (keep_samples_) keep_taken(w, pix, fresh);
+  void colour(const hls::QuadPolygon<P>& poly, const typename P::Param (&f)[hls::kQuadParams], std::size_t pix,
+              std::uint64_t fresh, bool full) {
+    hls::quad_pixel_accumulate(poly, f, hls::PixelSampleMask(fresh), *tables_, cover(pix), states_[pix].sum,
+                               side_log2_);
+    if (keep_samples_) keep_taken(poly, f, pix, fresh);
     if (full && resolve_full_) {
       const int n = n_;
       resolve_pixel(pix, image_.at(int(pix % std::size_t(n)), int(pix / std::size_t(n))), ids_, owners_scratch_);
@@ -335,7 +345,8 @@ class PixelFrame final : public PixelSink<P> {
     ids.id[pix] = pixel_id(pix, own);
   }
   struct ColourJob {
-    hls::QuadWindow<P> w;
+    const hls::QuadPolygon<P>* poly = nullptr;  // the piece's (PixelSink::pieces)
+    typename P::Param f[hls::kQuadParams];      // the record's values at its first sample
     std::size_t pix = 0;
     std::uint64_t fresh = 0;
     bool full = false;  // the record made the pixel full
@@ -362,11 +373,12 @@ class PixelFrame final : public PixelSink<P> {
 
   // The colours of the samples a record took (the pixel processor's own per-sample function) and
   // their arrival order.
-  void keep_taken(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t taken) {
+  void keep_taken(const hls::QuadPolygon<P>& poly, const typename P::Param (&f)[hls::kQuadParams], std::size_t pix,
+                  std::uint64_t taken) {
     for (int s = 0; s < spp_; ++s) {
       if (((taken >> s) & 1u) == 0) continue;
       const std::size_t k = pix * std::size_t(spp_) + std::size_t(s);
-      hls::quad_sample_colour(w, s, *tables_, cover(pix), sample_colour_[k].colour, side_log2_);
+      hls::quad_sample_colour(poly, f, s, *tables_, cover(pix), sample_colour_[k].colour, side_log2_);
       sample_rank_[k] = next_rank_++;
     }
   }
@@ -450,6 +462,7 @@ class PixelFrame final : public PixelSink<P> {
   IdBuffer ids_;
   std::vector<char> resolved_;
   std::vector<std::int32_t> owners_scratch_;
+  const std::vector<hls::QuadWindow<P>>* pieces_ = nullptr;  // PixelSink::pieces (this frame's)
   JobStream<ColourJob> colour_jobs_;  // declared last: its worker stops before the members it uses go
 };
 
