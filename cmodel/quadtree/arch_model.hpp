@@ -118,6 +118,10 @@ template <class P>
 class PixelSink {
  public:
   virtual ~PixelSink() = default;
+  // The frame's polygon pieces (their level-0 windows), given before the first record and kept
+  // until the run's end: every record's polygon constants are its piece's (QuadItem::piece), so a
+  // sink may read them there by reference instead of copying them from the record.
+  virtual void pieces(const std::vector<hls::QuadWindow<P>>& /*roots*/) {}
   // Processes one pixel record; returns the samples it took, and sets `became_full` when the
   // pixel's samples just became all owned.
   virtual std::uint64_t pixel(int unit, const QuadItem<P>& item, bool& became_full) = 0;
@@ -150,6 +154,7 @@ class ArchModel {
     st.pe_stall_cycles.assign(pes_.size(), 0);
     st.pieces.assign(roots.size(), PieceStats());
     reset();
+    sink.pieces(roots);
     std::size_t next_root = 0;
     long long t = 0;
     for (;;) {
@@ -172,7 +177,8 @@ class ArchModel {
       }
       // PEs and pixel processors, all reading the state at the start of the cycle (only the clock
       // edge, commit, changes the active lists).
-      for (int p : active_pes_) step_pe(p, t, masks, st, tracer);
+      for (int p : active_pes_)
+        if (pes_[std::size_t(p)].asleep_since < 0) step_pe(p, t, masks, st, tracer);
       for (int u : active_pixels_) step_pixel(u, t, sink, st, tracer);
       // The clock edge.
       commit(t, masks, st, tracer);
@@ -198,6 +204,8 @@ class ArchModel {
     std::vector<int> buf;  // ring of item slots, allocated on first push
     int head = 0, count = 0;
     bool popped = false;  // this cycle
+    int producers = 0;    // PEs that may push into it
+    int sleeper = -1;     // the PE asleep on it (see Pe::asleep_since)
     int start_count() const { return count + (popped ? 1 : 0); }
   };
   struct Work {
@@ -220,6 +228,11 @@ class ArchModel {
     bool busy = false;
     unsigned todo = 0;
     bool active = false;
+    // Model-speed device, not hardware: a PE stalled on an output FIFO it alone fills stays
+    // stalled until that FIFO is popped (the FIFO only drains meanwhile), so it is not stepped:
+    // from cycle asleep_since + 1 until the clock edge of the first pop, whose commit counts the
+    // skipped cycles as the stall cycles they are (-1: awake).
+    long long asleep_since = -1;
     std::unique_ptr<Work> work;
   };
 
@@ -277,6 +290,9 @@ class ArchModel {
       }
     }
     (void)last;
+    for (const Pe& pe : pes_)
+      for (int q = 0; q < (pe.out_by_quadrant ? hls::kQuadChildren : 1); ++q)
+        ++fifos_[std::size_t(pe.out_base + q)].producers;
     fifo_owner_.assign(fifos_.size(), -1);
     for (std::size_t p = 0; p < pes_.size(); ++p) fifo_owner_[std::size_t(pes_[p].in_fifo)] = int(p);
     pixel_active_.assign(std::size_t(pixel_units_), 0);
@@ -286,11 +302,14 @@ class ArchModel {
     for (auto& f : fifos_) {
       f.head = f.count = 0;
       f.popped = false;
+      f.sleeper = -1;
     }
+    woken_.clear();
     for (auto& p : pes_) {
       p.busy = false;
       p.todo = 0;
       p.active = false;
+      p.asleep_since = -1;
       if (p.work) {
         p.work->lifo.clear();
         p.work->slot = -1;
@@ -331,6 +350,7 @@ class ArchModel {
     f.head = (f.head + 1) % cfg_.fifo_depth;
     --f.count;
     f.popped = true;
+    if (f.sleeper >= 0) woken_.push_back(fifo);
     return true;
   }
 
@@ -365,6 +385,12 @@ class ArchModel {
       if (!room) {
         ++st.pe_stall_cycles[std::size_t(index)];
         w.stalled_on = dest;
+        Fifo& out = fifos_[std::size_t(dest)];
+        if (out.producers == 1) {  // asleep until out is popped (Pe::asleep_since)
+          pe.asleep_since = t;
+          out.sleeper = index;
+          if (out.popped) woken_.push_back(dest);  // popped earlier in this cycle
+        }
         return false;  // stall: the same child again next cycle
       }
       const int slot = allocate();
@@ -458,6 +484,17 @@ class ArchModel {
   }
 
   void commit(long long t, hls::MaskMemory& masks, ArchStats& st, ArchTracer<P>* tracer) {
+    // PEs asleep on a FIFO popped in this cycle: the cycles after the stall that put them to
+    // sleep, up to this one, were stall cycles; from the next cycle they test their output again.
+    for (int fifo : woken_) {
+      Fifo& f = fifos_[std::size_t(fifo)];
+      if (f.sleeper < 0) continue;
+      Pe& pe = pes_[std::size_t(f.sleeper)];
+      st.pe_stall_cycles[std::size_t(f.sleeper)] += t - pe.asleep_since;
+      pe.asleep_since = -1;
+      f.sleeper = -1;
+    }
+    woken_.clear();
     for (auto& [fifo, slot] : pending_) {
       Fifo& f = fifos_[std::size_t(fifo)];
       if (f.buf.empty()) f.buf.resize(std::size_t(cfg_.fifo_depth));
@@ -523,6 +560,7 @@ class ArchModel {
   std::vector<QuadItem<P>> pool_;
   std::vector<int> free_;
   std::vector<MaskSet> sets_;
+  std::vector<int> woken_;   // FIFOs popped in this cycle that a PE sleeps on
   long long in_flight_ = 0;  // items in FIFOs or LIFOs, pending pushes, and windows held by PEs
 };
 

@@ -154,9 +154,10 @@ class PixelFrame final : public PixelSink<P> {
   // quadtree/pixel_merge.hpp); off by default: the pixel state's sums are all the resolve needs.
   void keep_samples(bool on) { keep_samples_ = on; }
   // Workers (EngineOptions::threads): with 2 or more, the pixel processor's colour half (sample
-  // colours into the pixels' sums, hls quad_pixel_accumulate) runs on a second thread, fed in
-  // record order, and the resolve is split into strips. The owned samples, which feed back into
-  // the masks and so into the timing, stay on the model's thread: same bits, same cycles.
+  // colours into the pixels' sums, hls quad_pixel_accumulate) and the resolve of the pixels that
+  // become full run on a second thread, fed in record order, and the rest of the resolve is split
+  // into strips. The owned samples, which feed back into the masks and so into the timing, stay on
+  // the model's thread: same bits, same cycles.
   void set_threads(int threads) { threads_ = std::max(1, threads); }
 
   // Loads the tables and the light covers of a frame and clears the pixel states.
@@ -198,11 +199,24 @@ class PixelFrame final : public PixelSink<P> {
     light_samples_ = rasterise_lights(frame);
     samples_written_ = 0;
     hls::quad_pixel_clear(empty_state_);
-    if (threads_ > 1) colour_jobs_.start([this](ColourJob& j) { colour(j.w, j.pix, j.fresh); });
+    // Without kept samples (a whole image, not a pipeline's part) a pixel is resolved as soon as
+    // its samples are all owned: no later record changes its sums or owners.
+    resolve_full_ = !keep_samples_;
+    if (resolve_full_) {
+      image_ = Image(n_, n_);
+      ids_ = IdBuffer(n_, n_);
+      resolved_.assign(pixels, 0);
+      owners_scratch_.assign(std::size_t(spp_), 0);
+    }
+    pieces_ = nullptr;
+    if (threads_ > 1) colour_jobs_.start([this](ColourJob& j) { colour(*j.poly, j.f, j.pix, j.fresh, j.full); });
   }
 
   // The end of the frame's records: waits for the colour worker (before any read of the sums).
   void finish() { colour_jobs_.finish(); }
+
+  // The cycle model's pieces: the polygon constants the records' colour half reads by reference.
+  void pieces(const std::vector<hls::QuadWindow<P>>& roots) override { pieces_ = &roots; }
 
   std::uint64_t pixel(int, const QuadItem<P>& it, bool& became_full) override {
     const int x = int(it.w.x.value()), y = int(it.w.y.value());
@@ -210,25 +224,30 @@ class PixelFrame final : public PixelSink<P> {
     // The pixel processor (hls quad_pixel_process) in its two halves: the samples taken here, the
     // colours here or on the colour worker.
     hls::QuadPixelState<P>& state = touch(pix);
-    const hls::PixelSampleMask fresh = hls::quad_pixel_fresh(it.samples, state.owned);
-    state.owned = hls::PixelSampleMask(state.owned.value() | fresh.value());
-    const std::uint64_t f = fresh.value();
+    const std::uint64_t f = hls::quad_pixel_fresh(it.samples, state.owned).value();
+    became_full = false;
+    if (f == 0) return f;  // (a full pixel's state is not written again: the worker may read it)
+    state.owned = hls::PixelSampleMask(state.owned.value() | f);
     const std::uint64_t all = spp_ == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << spp_) - 1;
-    became_full = f != 0 && state.owned.value() == all;
+    became_full = state.owned.value() == all;
     samples_written_ += __builtin_popcountll(f);
     std::int32_t* owners = owners_.data() + pix * std::size_t(spp_);
     const std::int32_t id = std::int32_t(it.w.poly.id.value());
     if (f == all) std::fill(owners, owners + spp_, id);
     else
       for (std::uint64_t m = f; m != 0; m &= m - 1) owners[__builtin_ctzll(m)] = id;
-    if (f == 0) return f;
+    // The record's polygon constants are its piece's (a job points at them: the pieces outlive
+    // the colour worker's frame); the cycle model always gives the pieces (PixelSink::pieces).
+    const hls::QuadPolygon<P>& poly = pieces_ ? (*pieces_)[it.piece].poly : it.w.poly;
     if (colour_jobs_.running()) {
       ColourJob& job = colour_jobs_.push();
-      job.w = it.w;
+      job.poly = &poly;
+      for (int p = 0; p < hls::kQuadParams; ++p) job.f[p] = it.w.f[p];
       job.pix = pix;
       job.fresh = f;
+      job.full = became_full;
     } else {
-      colour(it.w, pix, f);
+      colour(poly, it.w.f, pix, f, became_full);
     }
     return f;
   }
@@ -254,18 +273,28 @@ class PixelFrame final : public PixelSink<P> {
   int side_log2() const { return side_log2_; }
   int samples_per_pixel() const { return spp_; }
 
-  // The resolved image and the per-pixel ids (majority owner).
-  void resolve(Image& image, IdBuffer& ids) const {
-    image = Image(n_, n_);
-    ids = IdBuffer(n_, n_);
+  // The resolved image and the per-pixel ids (majority owner): the pixels resolved when they
+  // became full, and the others now.
+  void resolve(Image& image, IdBuffer& ids) {
+    if (!resolve_full_) {
+      image_ = Image(n_, n_);
+      ids_ = IdBuffer(n_, n_);
+      resolved_.assign(std::size_t(n_) * std::size_t(n_), 0);
+    }
     const int strips = threads_ > 1 ? 4 * threads_ : 1;
-    parallel_for(std::size_t(strips), threads_, [&](std::size_t k, int) {
-      resolve_rows(int(k) * n_ / strips, (int(k) + 1) * n_ / strips, image, ids);
-    });
+    parallel_for(std::size_t(strips), threads_,
+                 [&](std::size_t k, int) { resolve_rows(int(k) * n_ / strips, (int(k) + 1) * n_ / strips); });
+    image = std::move(image_);
+    ids = std::move(ids_);
+    resolve_full_ = false;  // image_ and ids_ are handed over
   }
 
-  // Rows [y0, y1) of the resolve (rows are independent: strips may run on several workers).
-  void resolve_rows(int y0, int y1, Image& image, IdBuffer& ids) const {
+ private:
+  // Rows [y0, y1) of the resolve, the pixels not resolved yet (rows are independent: strips may
+  // run on several workers).
+  void resolve_rows(int y0, int y1) {
+    Image& image = image_;
+    IdBuffer& ids = ids_;
     std::vector<std::int32_t> own(static_cast<std::size_t>(spp_));
     // A pixel no polygon and no light touched shows the background: resolved once.
     hls::UInt<8> empty_rgb[3];
@@ -273,6 +302,7 @@ class PixelFrame final : public PixelSink<P> {
     for (int py = y0; py < y1; ++py)
       for (int px = 0; px < n_; ++px) {
         const std::size_t pix = std::size_t(py) * std::size_t(n_) + std::size_t(px);
+        if (resolved_[pix]) continue;
         std::uint8_t* dst = image.at(px, py);
         if (!touched(pix)) {
           hls::UInt<8> rgb[3];
@@ -281,13 +311,11 @@ class PixelFrame final : public PixelSink<P> {
           ids.id[pix] = -1;
           continue;
         }
-        hls::UInt<8> rgb[3];
-        hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb, side_log2_);
-        for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(rgb[c].value());
-        ids.id[pix] = pixel_id(pix, own);
+        resolve_pixel(pix, dst, ids, own);
       }
   }
 
+ public:
   const hls::QuadPixelTables<P>& tables() const { return *tables_; }
   // Light covers: per pixel the index of its cover (-1: none).
   const std::vector<int>& cover_index() const { return cover_index_; }
@@ -296,15 +324,32 @@ class PixelFrame final : public PixelSink<P> {
   long long samples_written() const { return samples_written_; }
 
  private:
-  // The colour half of a record: its fresh samples' colours into the pixel's sums.
-  void colour(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t fresh) {
-    hls::quad_pixel_accumulate(w, hls::PixelSampleMask(fresh), *tables_, cover(pix), states_[pix].sum, side_log2_);
-    if (keep_samples_) keep_taken(w, pix, fresh);
+  // The colour half of a record: its fresh samples' colours into the pixel's sums; the pixel
+  // resolved when the record made it full.
+  void colour(const hls::QuadPolygon<P>& poly, const typename P::Param (&f)[hls::kQuadParams], std::size_t pix,
+              std::uint64_t fresh, bool full) {
+    hls::quad_pixel_accumulate(poly, f, hls::PixelSampleMask(fresh), *tables_, cover(pix), states_[pix].sum,
+                               side_log2_);
+    if (keep_samples_) keep_taken(poly, f, pix, fresh);
+    if (full && resolve_full_) {
+      const int n = n_;
+      resolve_pixel(pix, image_.at(int(pix % std::size_t(n)), int(pix / std::size_t(n))), ids_, owners_scratch_);
+      resolved_[pix] = 1;
+    }
+  }
+  // A touched pixel's colour (hls quad_pixel_resolve) and id.
+  void resolve_pixel(std::size_t pix, std::uint8_t* dst, IdBuffer& ids, std::vector<std::int32_t>& own) const {
+    hls::UInt<8> rgb[3];
+    hls::quad_pixel_resolve(states_[pix], *tables_, cover(pix), rgb, side_log2_);
+    for (int c = 0; c < 3; ++c) dst[c] = std::uint8_t(rgb[c].value());
+    ids.id[pix] = pixel_id(pix, own);
   }
   struct ColourJob {
-    hls::QuadWindow<P> w;
+    const hls::QuadPolygon<P>* poly = nullptr;  // the piece's (PixelSink::pieces)
+    typename P::Param f[hls::kQuadParams];      // the record's values at its first sample
     std::size_t pix = 0;
     std::uint64_t fresh = 0;
+    bool full = false;  // the record made the pixel full
   };
 
   bool touched(std::size_t pix) const { return stamp_[pix] == frame_stamp_; }
@@ -328,11 +373,12 @@ class PixelFrame final : public PixelSink<P> {
 
   // The colours of the samples a record took (the pixel processor's own per-sample function) and
   // their arrival order.
-  void keep_taken(const hls::QuadWindow<P>& w, std::size_t pix, std::uint64_t taken) {
+  void keep_taken(const hls::QuadPolygon<P>& poly, const typename P::Param (&f)[hls::kQuadParams], std::size_t pix,
+                  std::uint64_t taken) {
     for (int s = 0; s < spp_; ++s) {
       if (((taken >> s) & 1u) == 0) continue;
       const std::size_t k = pix * std::size_t(spp_) + std::size_t(s);
-      hls::quad_sample_colour(w, s, *tables_, cover(pix), sample_colour_[k].colour, side_log2_);
+      hls::quad_sample_colour(poly, f, s, *tables_, cover(pix), sample_colour_[k].colour, side_log2_);
       sample_rank_[k] = next_rank_++;
     }
   }
@@ -409,6 +455,14 @@ class PixelFrame final : public PixelSink<P> {
   int threads_ = 1;
   bool fog_filled_ = false;
   double fog_start_ = 0, fog_end_ = 0;
+  // The image being resolved (resolve_full_: pixels resolved as they become full, marked in
+  // resolved_); owners_scratch_: the colour worker's scratch for pixel_id.
+  bool resolve_full_ = false;
+  Image image_;
+  IdBuffer ids_;
+  std::vector<char> resolved_;
+  std::vector<std::int32_t> owners_scratch_;
+  const std::vector<hls::QuadWindow<P>>* pieces_ = nullptr;  // PixelSink::pieces (this frame's)
   JobStream<ColourJob> colour_jobs_;  // declared last: its worker stops before the members it uses go
 };
 

@@ -50,25 +50,44 @@ void quad_pixel_clear(QuadPixelState<P>& st) {
   for (int c = 0; c < 3; ++c) st.sum[c] = typename P::Accum();
 }
 
-// The colour of sample s (bit S dj + di) of a pixel record when this polygon takes it: the
-// light's, when a light covers the sample from a priority position at or before the polygon's,
-// else colour x I, fog by 1/Z at the sample.
+// Whether the light cover shows at sample s instead of the polygon taking it: a light covers the
+// sample from a priority position at or before the polygon's.
 template <class P>
-void quad_sample_colour(const QuadWindow<P>& px, int s, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
-                        typename P::Sample (&colour)[3], int side_log2 = kDefaultSideLog2) {
-  const QuadPolygon<P>& poly = px.poly;
+bool quad_light_shows(const QuadLightCover<P>& lights, int s, const QuadPolygon<P>& poly) {
+  return lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value();
+}
+
+// What a polygon's colour at sample s (bit S dj + di) of a pixel record depends on: I and the fog
+// factor of W = 1/Z at the sample (exact plane values, f + D di + E dj, from the record's values f
+// at its first sample and the polygon's constants).
+template <class P>
+void quad_sample_shading(const QuadPolygon<P>& poly, const typename P::Param (&f)[kQuadParams], int s,
+                         const QuadPixelTables<P>& t, typename P::Intensity& in, typename P::FogFactorType& fog,
+                         int side_log2 = kDefaultSideLog2) {
   const int di = s & ((1 << side_log2) - 1), dj = s >> side_log2;
-  if (lights.mask.bit(s) && lights.priority[s].value() <= poly.id.value()) {
+  const typename P::Param vi =
+      P::at_sample(f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
+  const typename P::Param vw =
+      P::at_sample(f[kParamInverseDepth], poly.dp_di[kParamInverseDepth], poly.dp_dj[kParamInverseDepth], di, dj);
+  in = P::intensity(vi);
+  fog = P::fog_factor(t.fog, vw, poly.w_exponent);
+}
+
+// The colour of sample s (bit S dj + di) of a pixel record (values f, polygon poly) when this
+// polygon takes it: the light's, when it shows (quad_light_shows), else colour x I, fog by 1/Z at
+// the sample.
+template <class P>
+void quad_sample_colour(const QuadPolygon<P>& poly, const typename P::Param (&f)[kQuadParams], int s,
+                        const QuadPixelTables<P>& t, const QuadLightCover<P>& lights, typename P::Sample (&colour)[3],
+                        int side_log2 = kDefaultSideLog2) {
+  if (quad_light_shows(lights, s, poly)) {
     for (int c = 0; c < 3; ++c) colour[c] = lights.colour[s][c];
     return;
   }
-  const typename P::Param vi =
-      P::at_sample(px.f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], di, dj);
-  const typename P::Param vw =
-      P::at_sample(px.f[kParamInverseDepth], poly.dp_di[kParamInverseDepth], poly.dp_dj[kParamInverseDepth], di, dj);
-  const typename P::Intensity in = P::intensity(vi);
-  const typename P::FogFactorType f = P::fog_factor(t.fog, vw, poly.w_exponent);
-  for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, f, t.fog_colour[c]);
+  typename P::Intensity in;
+  typename P::FogFactorType fog;
+  quad_sample_shading(poly, f, s, t, in, fog, side_log2);
+  for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, fog, t.fog_colour[c]);
 }
 
 // The samples of a record that no earlier polygon owns: they become this polygon's.
@@ -76,18 +95,58 @@ inline PixelSampleMask quad_pixel_fresh(const PixelSampleMask& samples, const Pi
   return PixelSampleMask(samples.value() & ~owned.value());
 }
 
-// The colour half of a record: the fresh samples' colours added to the pixel's sums. Only the
-// sums depend on it (the owned samples, and so the masks and the timing, do not).
+// The colour half of a record under a flat I plane (D = E = 0: every sample has the record's I):
+// a sample's colour is then a function of its fog factor alone (quad_sample_colour), so a sample
+// whose fog factor equals the previous shaded sample's takes that sample's colour; the same bits
+// without the colour multipliers.
 template <class P>
-void quad_pixel_accumulate(const QuadWindow<P>& px, const PixelSampleMask& fresh, const QuadPixelTables<P>& t,
-                           const QuadLightCover<P>& lights, typename P::Accum (&sum)[3],
-                           int side_log2 = kDefaultSideLog2) {
+void quad_pixel_accumulate_flat(const QuadPolygon<P>& poly, const typename P::Param (&f)[kQuadParams],
+                                const PixelSampleMask& fresh, const QuadPixelTables<P>& t,
+                                const QuadLightCover<P>& lights, typename P::Accum (&sum)[3], int side_log2) {
+  const int side = 1 << side_log2;
+  const typename P::Intensity in =
+      P::intensity(P::at_sample(f[kParamIntensity], poly.dp_di[kParamIntensity], poly.dp_dj[kParamIntensity], 0, 0));
+  typename P::FogFactorType last_fog = typename P::FogFactorType();
+  typename P::Sample colour[3] = {};
+  bool shaded = false;  // colour is the colour at (in, last_fog)
+  for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
+    if (s >= side * side) break;
+    if (!fresh.bit(s)) continue;
+    if (quad_light_shows(lights, s, poly)) {
+      for (int c = 0; c < 3; ++c) sum[c] = P::accumulate(sum[c], lights.colour[s][c]);
+      continue;
+    }
+    const typename P::Param vw = P::at_sample(f[kParamInverseDepth], poly.dp_di[kParamInverseDepth],
+                                              poly.dp_dj[kParamInverseDepth], s & (side - 1), s >> side_log2);
+    const typename P::FogFactorType fog = P::fog_factor(t.fog, vw, poly.w_exponent);
+    if (!shaded || !(fog == last_fog)) {
+      for (int c = 0; c < 3; ++c) colour[c] = P::sample_colour(poly.colour[c], in, fog, t.fog_colour[c]);
+      last_fog = fog;
+      shaded = true;
+    }
+    for (int c = 0; c < 3; ++c) sum[c] = P::accumulate(sum[c], colour[c]);
+  }
+}
+
+// The colour half of a record (values f at its first sample; the polygon's constants poly, by
+// reference: the same for every record of the piece): the fresh samples' colours added to the
+// pixel's sums. Only the sums depend on it (the owned samples, and so the masks and the timing, do
+// not).
+template <class P>
+void quad_pixel_accumulate(const QuadPolygon<P>& poly, const typename P::Param (&f)[kQuadParams],
+                           const PixelSampleMask& fresh, const QuadPixelTables<P>& t, const QuadLightCover<P>& lights,
+                           typename P::Accum (&sum)[3], int side_log2 = kDefaultSideLog2) {
+  const typename P::Gradient zero = typename P::Gradient(0);
+  if (poly.dp_di[kParamIntensity] == zero && poly.dp_dj[kParamIntensity] == zero) {
+    quad_pixel_accumulate_flat(poly, f, fresh, t, lights, sum, side_log2);
+    return;
+  }
   const int side = 1 << side_log2;
   for (int s = 0; s < kMaxSamplesPerPixel; ++s) {
     if (s >= side * side) break;
     if (!fresh.bit(s)) continue;
     typename P::Sample colour[3];
-    quad_sample_colour(px, s, t, lights, colour, side_log2);
+    quad_sample_colour(poly, f, s, t, lights, colour, side_log2);
     for (int c = 0; c < 3; ++c) sum[c] = P::accumulate(sum[c], colour[c]);
   }
 }
@@ -99,7 +158,7 @@ PixelSampleMask quad_pixel_process(const QuadWindow<P>& px, const PixelSampleMas
                                    const QuadLightCover<P>& lights, QuadPixelState<P>& st,
                                    int side_log2 = kDefaultSideLog2) {
   const PixelSampleMask fresh = quad_pixel_fresh(samples, st.owned);
-  quad_pixel_accumulate(px, fresh, t, lights, st.sum, side_log2);
+  quad_pixel_accumulate(px.poly, px.f, fresh, t, lights, st.sum, side_log2);
   st.owned = PixelSampleMask(st.owned.value() | fresh.value());
   return fresh;
 }

@@ -127,10 +127,11 @@ nlohmann::ordered_json counts_of(const nlohmann::ordered_json& report) {
   return out;
 }
 
-// --threads: the colour work on a second worker and the resolve in strips give the same image,
-// ids and cycle counts (every count of the report) as one thread; one engine renders two frames
-// in a row (its pixel states cleared lazily), the fixed engine and its double twin, a frame with
-// light points (the airfield, 128 lines) and the depth-complexity list.
+// --threads: the colour work and the resolve of full pixels on a second worker and the rest of the
+// resolve in strips give the same image, ids and cycle counts (every count of the report) as one
+// thread, for 2, 3 and 4 workers; one engine renders the frames in a row (its pixel states cleared
+// lazily), the fixed engine and its double twin, frames with light points (the airfield, 128 and
+// 256 lines) and the depth-complexity list.
 TEST(QuadtreeEngine, ThreadsGiveTheSameImageAndCycles) {
   const Scene scene = load_scene(std::string(CIG_SOURCE_DIR) + "/scenes/airfield.json");
   ImageGenerator pipeline(scene);
@@ -139,23 +140,31 @@ TEST(QuadtreeEngine, ThreadsGiveTheSameImageAndCycles) {
   frames[0].raster = 128;
   frames[2].raster = 256;
   for (const char* engine : {"quadtree", "quadtree-double"}) {
-    EngineOptions one, two;
-    two.threads = 2;
+    EngineOptions one;
     const auto e1 = make_engine(engine, one);
-    const auto e2 = make_engine(engine, two);
+    std::vector<EngineRun> single;
+    for (const ScreenFrame& f : frames) single.push_back(e1->render(f));
+    for (int threads = 2; threads <= 4; ++threads) {
+      EngineOptions many;
+      many.threads = threads;
+      const auto en = make_engine(engine, many);
+      for (std::size_t k = 0; k < frames.size(); ++k) {
+        SCOPED_TRACE(std::string(engine) + " frame " + std::to_string(k) + " threads " + std::to_string(threads));
+        const EngineRun& a = single[k];
+        const EngineRun b = en->render(frames[k]);
+        EXPECT_EQ(a.out.image.rgb, b.out.image.rgb);
+        EXPECT_EQ(a.out.ids.id, b.out.ids.id);
+        EXPECT_EQ(a.report["cycles"]["frame"], b.report["cycles"]["frame"]);
+        EXPECT_EQ(counts_of(a.report), counts_of(b.report));
+        EXPECT_EQ(b.report["threads"].get<int>(), threads);
+      }
+    }
+    // A fresh engine gives the same frames (nothing kept from the frame before).
     for (std::size_t k = 0; k < frames.size(); ++k) {
-      SCOPED_TRACE(std::string(engine) + " frame " + std::to_string(k));
-      const EngineRun a = e1->render(frames[k]);
-      const EngineRun b = e2->render(frames[k]);
-      EXPECT_EQ(a.out.image.rgb, b.out.image.rgb);
-      EXPECT_EQ(a.out.ids.id, b.out.ids.id);
-      EXPECT_EQ(a.report["cycles"]["frame"], b.report["cycles"]["frame"]);
-      EXPECT_EQ(counts_of(a.report), counts_of(b.report));
-      EXPECT_EQ(b.report["threads"].get<int>(), 2);
-      // A fresh engine gives the same frame (nothing kept from the frame before).
+      SCOPED_TRACE(std::string(engine) + " fresh frame " + std::to_string(k));
       const EngineRun fresh = make_engine(engine, one)->render(frames[k]);
-      EXPECT_EQ(fresh.out.image.rgb, a.out.image.rgb);
-      EXPECT_EQ(fresh.out.ids.id, a.out.ids.id);
+      EXPECT_EQ(fresh.out.image.rgb, single[k].out.image.rgb);
+      EXPECT_EQ(fresh.out.ids.id, single[k].out.ids.id);
     }
   }
 }
