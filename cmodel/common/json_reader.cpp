@@ -159,6 +159,20 @@ bool JsonNode::boolean_or(const char* key, bool fallback) const {
 
 namespace {
 
+// A key looked up in an object, counting the keys it is compared with: the duplicate check's work.
+struct CountedKey {
+  const std::string& key;
+  std::size_t& visited;
+};
+bool operator<(const CountedKey& a, const std::string& b) {
+  ++a.visited;
+  return a.key < b;
+}
+bool operator<(const std::string& a, const CountedKey& b) {
+  ++b.visited;
+  return a < b.key;
+}
+
 // Builds the document from the parser's SAX events and rejects a repeated key where it occurs
 // (nlohmann keeps the last one silently, and `"raster": 4096, ..., "raster": 512` would render at
 // 512), naming its JSON path. Each event costs O(1) (a key O(log k) in an object of k keys): the
@@ -182,10 +196,15 @@ class CheckedDomBuilder {
   bool end_array() { return close(); }
   bool key(json::string_t& k) {
     Scope& o = open_.back();
-    auto [member, inserted] = o.value->get_ref<json::object_t&>().emplace(std::move(k), nullptr);
-    o.key = &member->first;
-    if (!inserted) throw InputError(file_, path(), "duplicate key '" + member->first + "' (each key may appear once)");
-    member_ = &member->second;
+    json::object_t& members = o.value->get_ref<json::object_t&>();
+    auto at = members.lower_bound(CountedKey{k, work_.keys_visited});
+    if (at != members.end() && at->first == k) {
+      o.key = &at->first;
+      throw InputError(file_, path(), "duplicate key '" + k + "' (each key may appear once)");
+    }
+    at = members.emplace_hint(at, std::move(k), nullptr);
+    o.key = &at->first;
+    member_ = &at->second;
     return true;
   }
   // The parser's own error (malformed text, a number out of range), rethrown as its type.
@@ -193,8 +212,7 @@ class CheckedDomBuilder {
   bool parse_error(std::size_t /*byte*/, const std::string& /*token*/, const Exception& e) {
     throw e;
   }
-  // Every value entered so far (test_json_reader counts them to show the work is linear).
-  std::size_t values() const { return values_; }
+  const JsonParseWork& work() const { return work_; }
 
  private:
   struct Scope {
@@ -204,7 +222,7 @@ class CheckedDomBuilder {
   // A value starts: the document, the next element of an array, or the member just keyed.
   template <class T>
   json* place(T&& x) {
-    ++values_;
+    ++work_.values;
     if (open_.empty()) return &(root_ = json(std::forward<T>(x)));
     json& c = *open_.back().value;
     if (c.is_array()) return &c.get_ref<json::array_t&>().emplace_back(std::forward<T>(x));
@@ -237,16 +255,17 @@ class CheckedDomBuilder {
   const std::string& file_;
   std::vector<Scope> open_;
   json* member_ = nullptr;
-  std::size_t values_ = 0;
+  JsonParseWork work_;
 };
 
 }  // namespace
 
-nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+nlohmann::json parse_json_text(const std::string& text, const std::string& file, JsonParseWork* work) {
   try {
     nlohmann::json doc;
     CheckedDomBuilder builder(doc, file);
     nlohmann::json::sax_parse(text, &builder);
+    if (work) *work = builder.work();
     return doc;
   } catch (const nlohmann::json::parse_error& e) {
     // nlohmann reports "parse error at line L, column C: <what>"; keep its position, reword the rest.

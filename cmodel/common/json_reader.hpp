@@ -62,8 +62,16 @@ class JsonNode {
   std::string path_;
 };
 
-// Parses `text` (the contents of `file`); malformed JSON throws InputError with line and column.
-nlohmann::json parse_json_text(const std::string& text, const std::string& file);
+// The work of parsing one document: the values built and the keys the duplicate-key check compared
+// (one lookup per key, O(log k) in an object of k keys), so that a test shows it grows with the
+// input linearly (verif/unit/test_json_reader.cpp), never quadratically.
+struct JsonParseWork {
+  std::size_t values = 0;
+  std::size_t keys_visited = 0;
+};
+// Parses `text` (the contents of `file`); malformed JSON throws InputError with line and column,
+// a key repeated in an object InputError at its JSON path. `work`, if given, gets what it took.
+nlohmann::json parse_json_text(const std::string& text, const std::string& file, JsonParseWork* work = nullptr);
 // Reads and parses a file; a missing or unreadable file throws InputError.
 nlohmann::json read_json_file(const std::string& file);
 // The largest JSON input (scene, polygon list) read: its parsed document takes about ten times as
