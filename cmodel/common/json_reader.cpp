@@ -28,8 +28,29 @@ std::string format_number(double x) {
 
 }  // namespace
 
+std::string JsonNode::path() const {
+  std::string p = prefix_;
+  for (int i = 0; i < steps_; ++i) {
+    if (step_[i].key) p += (p.empty() ? "" : ".") + *step_[i].key;
+    else p += "[" + std::to_string(step_[i].index) + "]";
+  }
+  return p;
+}
+
+JsonNode JsonNode::child(const nlohmann::json& value, const std::string* key, std::size_t index) const {
+  JsonNode c(*this);
+  c.value_ = &value;
+  if (c.steps_ == kMaxSteps) {
+    c.prefix_ = path();
+    c.steps_ = 0;
+  }
+  c.step_[c.steps_++] = {key, index};
+  return c;
+}
+
 void JsonNode::fail(const std::string& rule) const {
-  throw InputError(*file_, path_.empty() ? "(top level)" : path_, rule);
+  const std::string p = path();
+  throw InputError(*file_, p.empty() ? "(top level)" : p, rule);
 }
 
 void JsonNode::expect_object() const {
@@ -44,8 +65,7 @@ void JsonNode::allow_only(std::initializer_list<const char*> known) const {
     if (!ok) {
       std::string list;
       for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      JsonNode(*it, *file_, path_.empty() ? it.key() : path_ + "." + it.key())
-          .fail("unknown field '" + it.key() + "' (known fields: " + list + ")");
+      child(*it, &it.key(), 0).fail("unknown field '" + it.key() + "' (known fields: " + list + ")");
     }
   }
 }
@@ -59,14 +79,14 @@ JsonNode JsonNode::at(const char* key) const {
   expect_object();
   auto it = value_->find(key);
   if (it == value_->end()) fail(std::string("missing required field '") + key + "'");
-  return JsonNode(*it, *file_, path_.empty() ? key : path_ + "." + key);
+  return child(*it, &it.key(), 0);
 }
 
 std::optional<JsonNode> JsonNode::find(const char* key) const {
   expect_object();
   auto it = value_->find(key);
   if (it == value_->end()) return std::nullopt;
-  return JsonNode(*it, *file_, path_.empty() ? key : path_ + "." + key);
+  return child(*it, &it.key(), 0);
 }
 
 std::size_t JsonNode::array_size() const {
@@ -83,9 +103,7 @@ std::size_t JsonNode::array_size(std::size_t min, std::size_t max) const {
   return n;
 }
 
-JsonNode JsonNode::operator[](std::size_t i) const {
-  return JsonNode((*value_)[i], *file_, path_ + "[" + std::to_string(i) + "]");
-}
+JsonNode JsonNode::operator[](std::size_t i) const { return child((*value_)[i], nullptr, i); }
 
 double JsonNode::number() const {
   if (!value_->is_number()) fail(std::string("must be a number, found ") + type_name(*value_));
