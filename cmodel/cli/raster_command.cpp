@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cli/frame_jobs.hpp"
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
@@ -22,24 +23,15 @@ void RasterCommand::add_to(CLI::App& app) {
 int RasterCommand::run() {
   const EngineOptions eo = engine.options();
   auto eng = make_engine(engine.engine, eo);
-  // The engine's capability checks name no file: this one.
-  const auto named = [&](const auto& check) {
-    try {
-      check();
-    } catch (const InputError& e) { throw InputError(e.file().empty() ? polys_file : e.file(), e.where(), e.rule()); }
-  };
   // The raster and the counts as soon as the list is parsed (a list of 1 M polygons is refused
   // before its polygons are read), then the frame as the engine draws it (split into fans).
-  const ScreenFrame frame = load_polygon_list(polys_file, [&](const ScreenFrame& head, std::size_t np, std::size_t nl) {
-    named([&] {
-      eng->check_raster(head.raster);
-      eng->check_counts(head.frame, head.channel, np, nl);
-    });
-  });
-  named([&] {
+  const ScreenFrame frame = load_polygon_list(polys_file, FrameJobs::list_capacity(polys_file, *eng));
+  try {
     eng->check_raster(frame.raster);
     eng->check_frame(frame);
-  });
+  } catch (const InputError& e) {  // the engine's capability checks name no file: this one
+    throw InputError(e.file().empty() ? polys_file : e.file(), e.where(), e.rule());
+  }
   OutputPlan plan;
   plan.input(polys_file, "the polygon list this run reads");
   plan.file(out_file, "--out");

@@ -88,7 +88,10 @@ ScreenLightPoint read_screen_light_point(const JsonNode& l, std::size_t np) {
   return lp;
 }
 
-ScreenFrame polygon_list_of(const nlohmann::json& doc, const std::string& file, const PolygonListCheck& check) {
+}  // namespace
+
+ScreenFrame polygon_list_of_document(const nlohmann::json& doc, const std::string& file,
+                                     const PolygonListCheck& check) {
   JsonNode root(doc, file, "");
   ScreenFrame f = read_list_header(root);
   JsonNode polys = root.at("polygons");
@@ -107,17 +110,15 @@ ScreenFrame polygon_list_of(const nlohmann::json& doc, const std::string& file, 
   return f;
 }
 
-}  // namespace
-
 ScreenFrame parse_polygon_list(const std::string& text, const std::string& file, const PolygonListCheck& check) {
-  return polygon_list_of(parse_json_text(text, file), file, check);
+  return polygon_list_of_document(parse_json_text(text, file), file, check);
 }
 
 ScreenFrame load_polygon_list(const std::string& file, const PolygonListCheck& check) {
   // The text is let go once parsed (the document holds all of it): the peak is text + document,
   // then document + frame, never the three.
   const nlohmann::json doc = parse_json_text(read_text_file(file), file);
-  return polygon_list_of(doc, file, check);
+  return polygon_list_of_document(doc, file, check);
 }
 
 namespace {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "scene/scene.hpp"
 
 namespace cig {
@@ -91,6 +93,9 @@ struct ScreenFrame {
 using PolygonListCheck = std::function<void(const ScreenFrame& header, std::size_t polygons, std::size_t light_points)>;
 ScreenFrame load_polygon_list(const std::string& file, const PolygonListCheck& check = {});
 ScreenFrame parse_polygon_list(const std::string& text, const std::string& file, const PolygonListCheck& check = {});
+// The polygon list of a parsed document (parse_json_text), for a caller that has parsed it already.
+ScreenFrame polygon_list_of_document(const nlohmann::json& doc, const std::string& file,
+                                     const PolygonListCheck& check = {});
 std::string polygon_list_json(const ScreenFrame& f);  // "cig-polys" text
 // One list of a channel's rendering-pipeline lists (seed 000) in order: the polygons one after
 // another, each light's priority moved by the polygons before its part. Its polygon indices are
