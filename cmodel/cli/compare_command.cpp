@@ -178,9 +178,9 @@ int CompareCommand::run() {
   const EngineOptions eo = engine.options();
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = eo.fan_split;  // the reference follows the engine's polygon split
-  FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
-                                   manager_unit.arith());
   const auto probe = make_engine(engine.engine, eo);
+  FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel, model_limit.limits(),
+                                   manager_unit.arith(), FrameJobs::list_capacity(input, *probe));
   if (pipelines > 1) {
     if (!jobs.is_scene())
       throw InputError(input, "--pipelines", "rendering pipelines split a scene's lists; this is a polygon list");

@@ -30,11 +30,13 @@ EngineOptions reference_options(const std::string& reference, int samples_per_pi
 }
 
 FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
-                          int channel, const SceneLimits& limits, VisibilityArith visibility) {
+                          int channel, const SceneLimits& limits, VisibilityArith visibility,
+                          const PolygonListCheck& list_check) {
   FrameJobs j;
   j.input_ = input;
-  const std::string text = read_text_file(input);
-  if (input_kind(text, input) == InputKind::kPolygonList) {
+  // Parsed once (the text let go): the kind, then the list or the scene from the same document.
+  const nlohmann::json doc = parse_json_text(read_text_file(input), input);
+  if (input_kind_of_document(doc, input) == InputKind::kPolygonList) {
     // --frame, --frames and --channel choose images of a scene; a polygon list is one image.
     if (frame_given || !frames_text.empty() || channel >= 0)
       throw InputError(input, "",
@@ -42,11 +44,11 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
                                    : !frames_text.empty() ? "--frames"
                                                           : "--channel") +
                            " applies to a scene; this input is a polygon list (one image)");
-    j.list_.push_back(parse_polygon_list(text, input));
+    j.list_.push_back(polygon_list_of_document(doc, input, list_check));
     j.jobs_.push_back({j.list_[0].frame, j.list_[0].channel});
     return j;
   }
-  j.scene_ = std::make_unique<Scene>(parse_scene(text, input, limits));
+  j.scene_ = std::make_unique<Scene>(scene_of_document(doc, input, limits));
   int a, b;
   frame_range(frames_text, frame_k, frame_given, j.scene_->frame_count(), input, a, b);
   if (channel >= int(j.scene_->channels.size()))
@@ -60,6 +62,18 @@ FrameJobs FrameJobs::load(const std::string& input, const std::string& frames_te
   j.channels_ = channel < 0 ? int(j.scene_->channels.size()) : 1;
   j.generator_ = std::make_unique<ImageGenerator>(*j.scene_, CullSettings{}, visibility);
   return j;
+}
+
+PolygonListCheck FrameJobs::list_capacity(const std::string& input, const RasterEngine& engine) {
+  return [&input, &engine](const ScreenFrame& head, std::size_t polygons, std::size_t light_points) {
+    try {
+      engine.check_raster(head.raster);
+      engine.check_counts(head.frame, head.channel, polygons, light_points);
+    } catch (const InputError& e) {
+      if (!e.file().empty()) throw;
+      throw InputError(input, e.where(), e.rule());  // the input that makes the frame
+    }
+  };
 }
 
 ScreenFrame FrameJobs::screen_frame(std::size_t k) const {

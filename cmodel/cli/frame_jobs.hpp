@@ -36,9 +36,13 @@ inline void add_reference_spp(CLI::App* app, int& spp) {
 // --frame K, or frame 0) x channels (all, or --channel C). Checked when loaded (InputError).
 class FrameJobs {
  public:
+  // `list_check`: a polygon list's capacity check on its counts, before its polygons are read.
   static FrameJobs load(const std::string& input, const std::string& frames_text, int frame_k, bool frame_given,
                         int channel, const SceneLimits& limits = {},
-                        VisibilityArith visibility = VisibilityArith::kKernel);
+                        VisibilityArith visibility = VisibilityArith::kKernel, const PolygonListCheck& list_check = {});
+  // The engine's raster and capacity on a polygon list's counts (RasterEngine::check_counts),
+  // naming `input`: FrameJobs::load's `list_check`.
+  static PolygonListCheck list_capacity(const std::string& input, const RasterEngine& engine);
   std::size_t size() const { return jobs_.size(); }
   int frame(std::size_t k) const { return jobs_[k].first; }
   int channel(std::size_t k) const { return jobs_[k].second; }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cli/frame_jobs.hpp"
 #include "cli/output_plan.hpp"
 #include "common/error.hpp"
 #include "image/image.hpp"
@@ -21,8 +22,10 @@ void RasterCommand::add_to(CLI::App& app) {
 
 int RasterCommand::run() {
   const EngineOptions eo = engine.options();
-  const ScreenFrame frame = load_polygon_list(polys_file);
   auto eng = make_engine(engine.engine, eo);
+  // The raster and the counts as soon as the list is parsed (a list of 1 M polygons is refused
+  // before its polygons are read), then the frame as the engine draws it (split into fans).
+  const ScreenFrame frame = load_polygon_list(polys_file, FrameJobs::list_capacity(polys_file, *eng));
   try {
     eng->check_raster(frame.raster);
     eng->check_frame(frame);

@@ -267,14 +267,23 @@ int SweepCommand::run() {
   const std::vector<Combination> combos = combinations(varied, base);
   EngineOptions ro = reference_options(reference, reference_spp);
   ro.fan_split = base.fan_split;  // the reference follows the engines' polygon split
-  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel,
-                                         model_limit.limits(), manager_unit.arith());
   std::vector<std::unique_ptr<RasterEngine>> engines = make_engines(*this, base, combos);
-  for (std::size_t v = 0; v < engines.size(); ++v) {
-    try {
-      jobs.check_capacity(*engines[v]);
-    } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
-  }
+  // Each engine's capacity: on a polygon list's counts once parsed, then on every image.
+  const auto for_each_engine = [&](const auto& check) {
+    for (std::size_t v = 0; v < engines.size(); ++v) {
+      try {
+        check(*engines[v]);
+      } catch (const InputError& e) { throw InputError(e.file(), "--vary", combos[v].label + ": " + e.rule()); }
+    }
+  };
+  const FrameJobs jobs = FrameJobs::load(input, frames_text, frame_k, frame_opt->count() > 0, channel,
+                                         model_limit.limits(), manager_unit.arith(),
+                                         [&](const ScreenFrame& head, std::size_t polygons, std::size_t light_points) {
+                                           for_each_engine([&](const RasterEngine& e) {
+                                             FrameJobs::list_capacity(input, e)(head, polygons, light_points);
+                                           });
+                                         });
+  for_each_engine([&](const RasterEngine& e) { jobs.check_capacity(e); });
   if (!html_dir.empty()) prepare_sweep_html(html_dir, report_file, plot_file);
   OutputPlan plan;
   jobs.declare_inputs(plan);

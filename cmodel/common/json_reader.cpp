@@ -28,8 +28,29 @@ std::string format_number(double x) {
 
 }  // namespace
 
+std::string JsonNode::path() const {
+  std::string p = prefix_;
+  for (int i = 0; i < steps_; ++i) {
+    if (step_[i].key) p += (p.empty() ? "" : ".") + *step_[i].key;
+    else p += "[" + std::to_string(step_[i].index) + "]";
+  }
+  return p;
+}
+
+JsonNode JsonNode::child(const nlohmann::json& value, const std::string* key, std::size_t index) const {
+  JsonNode c(*this);
+  c.value_ = &value;
+  if (c.steps_ == kMaxSteps) {
+    c.prefix_ = path();
+    c.steps_ = 0;
+  }
+  c.step_[c.steps_++] = {key, index};
+  return c;
+}
+
 void JsonNode::fail(const std::string& rule) const {
-  throw InputError(*file_, path_.empty() ? "(top level)" : path_, rule);
+  const std::string p = path();
+  throw InputError(*file_, p.empty() ? "(top level)" : p, rule);
 }
 
 void JsonNode::expect_object() const {
@@ -44,8 +65,7 @@ void JsonNode::allow_only(std::initializer_list<const char*> known) const {
     if (!ok) {
       std::string list;
       for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      JsonNode(*it, *file_, path_.empty() ? it.key() : path_ + "." + it.key())
-          .fail("unknown field '" + it.key() + "' (known fields: " + list + ")");
+      child(*it, &it.key(), 0).fail("unknown field '" + it.key() + "' (known fields: " + list + ")");
     }
   }
 }
@@ -59,14 +79,14 @@ JsonNode JsonNode::at(const char* key) const {
   expect_object();
   auto it = value_->find(key);
   if (it == value_->end()) fail(std::string("missing required field '") + key + "'");
-  return JsonNode(*it, *file_, path_.empty() ? key : path_ + "." + key);
+  return child(*it, &it.key(), 0);
 }
 
 std::optional<JsonNode> JsonNode::find(const char* key) const {
   expect_object();
   auto it = value_->find(key);
   if (it == value_->end()) return std::nullopt;
-  return JsonNode(*it, *file_, path_.empty() ? key : path_ + "." + key);
+  return child(*it, &it.key(), 0);
 }
 
 std::size_t JsonNode::array_size() const {
@@ -83,9 +103,7 @@ std::size_t JsonNode::array_size(std::size_t min, std::size_t max) const {
   return n;
 }
 
-JsonNode JsonNode::operator[](std::size_t i) const {
-  return JsonNode((*value_)[i], *file_, path_ + "[" + std::to_string(i) + "]");
-}
+JsonNode JsonNode::operator[](std::size_t i) const { return child((*value_)[i], nullptr, i); }
 
 double JsonNode::number() const {
   if (!value_->is_number()) fail(std::string("must be a number, found ") + type_name(*value_));
@@ -159,65 +177,114 @@ bool JsonNode::boolean_or(const char* key, bool fallback) const {
 
 namespace {
 
-// The JSON path of the value the parser is at, and the keys already seen in every open object, so
-// that a repeated key is rejected where it occurs (nlohmann keeps the last one silently, and
-// `"raster": 4096, ..., "raster": 512` would render at 512).
-class DuplicateKeyCheck {
- public:
-  explicit DuplicateKeyCheck(const std::string& file) : file_(file) {}
+// A key looked up in an object, counting the keys it is compared with: the duplicate check's work.
+struct CountedKey {
+  const std::string& key;
+  std::size_t& visited;
+};
+bool operator<(const CountedKey& a, const std::string& b) {
+  ++a.visited;
+  return a.key < b;
+}
+bool operator<(const std::string& a, const CountedKey& b) {
+  ++b.visited;
+  return a < b.key;
+}
 
-  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    using E = nlohmann::json::parse_event_t;
-    switch (event) {
-      case E::object_start:
-      case E::array_start:
-        enter_value();
-        open_.push_back({event == E::array_start, 0, {}, {}});
-        break;
-      case E::key: {
-        Scope& o = open_.back();
-        o.key = parsed.get<std::string>();
-        for (const std::string& k : o.keys)
-          if (k == o.key) throw InputError(file_, path(), "duplicate key '" + o.key + "' (each key may appear once)");
-        o.keys.push_back(o.key);
-        break;
-      }
-      case E::object_end:
-      case E::array_end:
-        open_.pop_back();
-        break;
-      case E::value:
-        enter_value();
-        break;
+// Builds the document from the parser's SAX events and rejects a repeated key where it occurs
+// (nlohmann keeps the last one silently, and `"raster": 4096, ..., "raster": 512` would render at
+// 512), naming its JSON path. Each event costs O(1) (a key O(log k) in an object of k keys): the
+// callback form of nlohmann::json::parse scans an array's elements after each object in it ends,
+// O(n^2) for a list of n polygons, and copies every scalar once more.
+class CheckedDomBuilder {
+ public:
+  using json = nlohmann::json;
+  CheckedDomBuilder(json& root, const std::string& file) : root_(root), file_(file) {}
+
+  bool null() { return add(nullptr); }
+  bool boolean(bool x) { return add(x); }
+  bool number_integer(json::number_integer_t x) { return add(x); }
+  bool number_unsigned(json::number_unsigned_t x) { return add(x); }
+  bool number_float(json::number_float_t x, const json::string_t& /*token*/) { return add(x); }
+  bool string(json::string_t& x) { return add(std::move(x)); }
+  bool binary(json::binary_t& x) { return add(std::move(x)); }
+  bool start_object(std::size_t /*unknown*/) { return open(json::value_t::object); }
+  bool start_array(std::size_t /*unknown*/) { return open(json::value_t::array); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(json::string_t& k) {
+    Scope& o = open_.back();
+    json::object_t& members = o.value->get_ref<json::object_t&>();
+    auto at = members.lower_bound(CountedKey{k, work_.keys_visited});
+    if (at != members.end() && at->first == k) {
+      o.key = &at->first;
+      throw InputError(file_, path(), "duplicate key '" + k + "' (each key may appear once)");
     }
+    at = members.emplace_hint(at, std::move(k), nullptr);
+    o.key = &at->first;
+    member_ = &at->second;
     return true;
   }
+  // The parser's own error (malformed text, a number out of range), rethrown as its type.
+  template <class Exception>
+  bool parse_error(std::size_t /*byte*/, const std::string& /*token*/, const Exception& e) {
+    throw e;
+  }
+  const JsonParseWork& work() const { return work_; }
 
  private:
   struct Scope {
-    bool array;
-    std::size_t next_index;
-    std::string key;
-    std::vector<std::string> keys;
+    json* value;             // the open object or array
+    const std::string* key;  // an object's member being read (its key in the map: stable)
   };
-  // A value (scalar, object or array) starts: in an array it takes the next index.
-  void enter_value() {
-    if (!open_.empty() && open_.back().array) open_.back().key = "[" + std::to_string(open_.back().next_index++) + "]";
+  // A value starts: the document, the next element of an array, or the member just keyed.
+  template <class T>
+  json* place(T&& x) {
+    ++work_.values;
+    if (open_.empty()) return &(root_ = json(std::forward<T>(x)));
+    json& c = *open_.back().value;
+    if (c.is_array()) return &c.get_ref<json::array_t&>().emplace_back(std::forward<T>(x));
+    *member_ = json(std::forward<T>(x));
+    return member_;
   }
+  template <class T>
+  bool add(T&& x) {
+    place(std::forward<T>(x));
+    return true;
+  }
+  bool open(json::value_t kind) {
+    open_.push_back({place(kind), nullptr});
+    return true;
+  }
+  bool close() {
+    open_.pop_back();
+    return true;
+  }
+  // The JSON path of the member being read, e.g. "channels[0].fov"; built only for an error.
   std::string path() const {
     std::string p;
-    for (const Scope& s : open_) p += (s.array || p.empty() ? "" : ".") + s.key;
+    for (const Scope& s : open_) {
+      if (s.value->is_array()) p += "[" + std::to_string(s.value->size() - 1) + "]";
+      else p += (p.empty() ? "" : ".") + *s.key;
+    }
     return p;
   }
+  json& root_;
   const std::string& file_;
   std::vector<Scope> open_;
+  json* member_ = nullptr;
+  JsonParseWork work_;
 };
 
 }  // namespace
 
-nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+nlohmann::json parse_json_text(const std::string& text, const std::string& file, JsonParseWork* work) {
   try {
-    return nlohmann::json::parse(text, DuplicateKeyCheck(file));
+    nlohmann::json doc;
+    CheckedDomBuilder builder(doc, file);
+    nlohmann::json::sax_parse(text, &builder);
+    if (work) *work = builder.work();
+    return doc;
   } catch (const nlohmann::json::parse_error& e) {
     // nlohmann reports "parse error at line L, column C: <what>"; keep its position, reword the rest.
     std::string what = e.what();

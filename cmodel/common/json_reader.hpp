@@ -18,10 +18,10 @@ namespace cig {
 class JsonNode {
  public:
   JsonNode(const nlohmann::json& value, const std::string& file, std::string path)
-      : value_(&value), file_(&file), path_(std::move(path)) {}
+      : value_(&value), file_(&file), prefix_(std::move(path)) {}
 
   [[noreturn]] void fail(const std::string& rule) const;
-  const std::string& path() const { return path_; }
+  std::string path() const;  // e.g. "objects[2].subobjects[0].polygons[7].indices"
   const std::string& file() const { return *file_; }
   const nlohmann::json& raw() const { return *value_; }
 
@@ -57,13 +57,33 @@ class JsonNode {
   bool boolean_or(const char* key, bool fallback) const;
 
  private:
+  // The JSON path is kept as the steps from the constructor's node (member keys, which live in the
+  // document, and array indices) and spelled out only when a rule fails: a path string built for
+  // every node read cost more than the number it names (a fifth of a polygon list's load).
+  struct Step {
+    const std::string* key;  // a member's key; null: an array element
+    std::size_t index;
+  };
+  static constexpr int kMaxSteps = 12;  // deeper: the steps above are spelled into prefix_
+  JsonNode child(const nlohmann::json& value, const std::string* key, std::size_t index) const;
+
   const nlohmann::json* value_;
   const std::string* file_;
-  std::string path_;
+  std::string prefix_;  // the path to the first step
+  int steps_ = 0;
+  Step step_[kMaxSteps];
 };
 
-// Parses `text` (the contents of `file`); malformed JSON throws InputError with line and column.
-nlohmann::json parse_json_text(const std::string& text, const std::string& file);
+// The work of parsing one document: the values built and the keys the duplicate-key check compared
+// (one lookup per key, O(log k) in an object of k keys), so that a test shows it grows with the
+// input linearly (verif/unit/test_json_reader.cpp), never quadratically.
+struct JsonParseWork {
+  std::size_t values = 0;
+  std::size_t keys_visited = 0;
+};
+// Parses `text` (the contents of `file`); malformed JSON throws InputError with line and column,
+// a key repeated in an object InputError at its JSON path. `work`, if given, gets what it took.
+nlohmann::json parse_json_text(const std::string& text, const std::string& file, JsonParseWork* work = nullptr);
 // Reads and parses a file; a missing or unreadable file throws InputError.
 nlohmann::json read_json_file(const std::string& file);
 // The largest JSON input (scene, polygon list) read: its parsed document takes about ten times as

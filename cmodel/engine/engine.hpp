@@ -61,6 +61,12 @@ class RasterEngine {
   // fields hold) and raster before any work, so that a command fails before its first output
   // (InputError).
   void check_frame(const ScreenFrame& frame) const;
+  // The same capacities against a frame's counts alone, as soon as they are known and before any
+  // polygon is built (a polygon list refused at 1 M polygons without reading them; InputError with
+  // check_frame's message). Splitting into fans only adds polygons: a count over the limit here is
+  // over it after the split too.
+  virtual void check_counts(int /*frame*/, int /*channel*/, std::size_t /*polygons*/,
+                            std::size_t /*light_points*/) const {}
   // Checks a scene as a whole before any work (InputError): an engine that draws only some of a
   // scene's objects refuses a scene with none of them, rather than a frame in the middle of a run.
   virtual void check_scene(const Scene& /*scene*/) const {}

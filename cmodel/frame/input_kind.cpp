@@ -5,7 +5,10 @@
 namespace cig {
 
 InputKind input_kind(const std::string& text, const std::string& file) {
-  const nlohmann::json doc = parse_json_text(text, file);
+  return input_kind_of_document(parse_json_text(text, file), file);
+}
+
+InputKind input_kind_of_document(const nlohmann::json& doc, const std::string& file) {
   const JsonNode root(doc, file, "");
   const JsonNode format = root.at("format");
   const std::string name = format.string();

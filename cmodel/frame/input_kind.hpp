@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace cig {
 
 enum class InputKind { kScene, kPolygonList };
@@ -12,5 +14,7 @@ enum class InputKind { kScene, kPolygonList };
 // Parses `text` (the contents of `file`); InputError when it is not JSON, not an object, or its
 // "format" is neither.
 InputKind input_kind(const std::string& text, const std::string& file);
+// The same of a parsed document (parse_json_text).
+InputKind input_kind_of_document(const nlohmann::json& doc, const std::string& file);
 
 }  // namespace cig

@@ -1,5 +1,6 @@
 #include "frame/screen_frame.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -10,9 +11,10 @@
 
 namespace cig {
 
-ScreenFrame parse_polygon_list(const std::string& text, const std::string& file) {
-  nlohmann::json doc = parse_json_text(text, file);
-  JsonNode root(doc, file, "");
+namespace {
+
+// The list's fields other than its polygons and light points.
+ScreenFrame read_list_header(const JsonNode& root) {
   if (root.at("format").string() != "cig-polys")
     root.at("format").fail("must be \"cig-polys\" (a scene uses \"cig-scene\")");
   root.allow_only({"format", "version", "raster", "frame", "channel", "fog", "background", "polygons", "light_points"});
@@ -36,60 +38,88 @@ ScreenFrame parse_polygon_list(const std::string& text, const std::string& file)
     f.background = f.fog.colour;
   }
   if (auto b = root.find("background")) f.background = b->colour();
+  return f;
+}
 
-  JsonNode polys = root.at("polygons");
-  std::size_t np = polys.array_size();
-  for (std::size_t i = 0; i < np; ++i) {
-    JsonNode p = polys[i];
-    p.allow_only({"colour", "opaque", "protected", "vertices"});
-    ScreenPolygon sp;
-    if (auto c = p.find("colour")) sp.colour = c->colour();
-    sp.opaque = p.boolean_or("opaque", true);
-    sp.protect = p.boolean_or("protected", false);
-    JsonNode vs = p.at("vertices");
-    std::size_t nv = vs.array_size();
-    if (nv < 3) vs.fail("polygon has " + std::to_string(nv) + " vertices; at least 3 are required");
-    if (nv > std::size_t(kMaxScreenVertices))
-      vs.fail("polygon has " + std::to_string(nv) + " vertices; at most " + std::to_string(kMaxScreenVertices) +
-              " are accepted");
-    std::vector<glm::dvec2> xy;
-    for (std::size_t k = 0; k < nv; ++k) {
-      JsonNode v = vs[k];
-      v.array_size(4, 4);
-      ScreenVertex sv;
-      sv.xs = v[0].number(-1, 1);
-      sv.ys = v[1].number(-1, 1);
-      sv.zs = v[2].number(kMinListDepth, kMaxListDepth);
-      sv.is = v[3].number(0, 1);
-      sp.vertices.push_back(sv);
-      xy.emplace_back(sv.xs, sv.ys);
-    }
-    std::string rule = check_convex_2d(xy);
-    if (!rule.empty()) p.fail(rule);
-    f.polygons.push_back(std::move(sp));
+// One polygon of the list; `xy` is scratch space for the convexity check.
+ScreenPolygon read_screen_polygon(const JsonNode& p, std::vector<glm::dvec2>& xy) {
+  p.allow_only({"colour", "opaque", "protected", "vertices"});
+  ScreenPolygon sp;
+  if (auto c = p.find("colour")) sp.colour = c->colour();
+  sp.opaque = p.boolean_or("opaque", true);
+  sp.protect = p.boolean_or("protected", false);
+  JsonNode vs = p.at("vertices");
+  std::size_t nv = vs.array_size();
+  if (nv < 3) vs.fail("polygon has " + std::to_string(nv) + " vertices; at least 3 are required");
+  if (nv > std::size_t(kMaxScreenVertices))
+    vs.fail("polygon has " + std::to_string(nv) + " vertices; at most " + std::to_string(kMaxScreenVertices) +
+            " are accepted");
+  sp.vertices.reserve(nv);
+  xy.clear();
+  for (std::size_t k = 0; k < nv; ++k) {
+    JsonNode v = vs[k];
+    v.array_size(4, 4);
+    ScreenVertex sv;
+    sv.xs = v[0].number(-1, 1);
+    sv.ys = v[1].number(-1, 1);
+    sv.zs = v[2].number(kMinListDepth, kMaxListDepth);
+    sv.is = v[3].number(0, 1);
+    sp.vertices.push_back(sv);
+    xy.emplace_back(sv.xs, sv.ys);
   }
-  if (auto lps = root.find("light_points")) {
-    std::size_t nl = lps->array_size();
-    for (std::size_t i = 0; i < nl; ++i) {
-      JsonNode l = (*lps)[i];
-      l.allow_only({"centre", "diameter", "colour", "intensity", "priority"});
-      ScreenLightPoint lp;
-      JsonNode c = l.at("centre");
-      c.array_size(3, 3);
-      lp.xs = c[0].number(-1, 1);
-      lp.ys = c[1].number(-1, 1);
-      lp.zs = c[2].number(kMinListDepth, kMaxListDepth);
-      lp.ds = l.at("diameter").number(0, 1);
-      if (auto col = l.find("colour")) lp.colour = col->colour();
-      lp.intensity = l.find("intensity") ? l.at("intensity").number(0, 1) : 1.0;
-      if (auto pr = l.find("priority")) lp.priority = std::int32_t(pr->integer(0, (long long)np));
-      f.light_points.push_back(lp);
-    }
+  std::string rule = check_convex_2d(xy);
+  if (!rule.empty()) p.fail(rule);
+  return sp;
+}
+
+// One light point of a list of `np` polygons.
+ScreenLightPoint read_screen_light_point(const JsonNode& l, std::size_t np) {
+  l.allow_only({"centre", "diameter", "colour", "intensity", "priority"});
+  ScreenLightPoint lp;
+  JsonNode c = l.at("centre");
+  c.array_size(3, 3);
+  lp.xs = c[0].number(-1, 1);
+  lp.ys = c[1].number(-1, 1);
+  lp.zs = c[2].number(kMinListDepth, kMaxListDepth);
+  lp.ds = l.at("diameter").number(0, 1);
+  if (auto col = l.find("colour")) lp.colour = col->colour();
+  lp.intensity = l.find("intensity") ? l.at("intensity").number(0, 1) : 1.0;
+  if (auto pr = l.find("priority")) lp.priority = std::int32_t(pr->integer(0, (long long)np));
+  return lp;
+}
+
+}  // namespace
+
+ScreenFrame polygon_list_of_document(const nlohmann::json& doc, const std::string& file,
+                                     const PolygonListCheck& check) {
+  JsonNode root(doc, file, "");
+  ScreenFrame f = read_list_header(root);
+  JsonNode polys = root.at("polygons");
+  const std::size_t np = polys.array_size();
+  const auto lps = root.find("light_points");
+  // The counts are known: a caller's capacity refuses the list here, before any polygon is read.
+  if (check) check(f, np, lps && lps->raw().is_array() ? lps->raw().size() : 0);
+  f.polygons.reserve(np);
+  std::vector<glm::dvec2> xy;
+  for (std::size_t i = 0; i < np; ++i) f.polygons.push_back(read_screen_polygon(polys[i], xy));
+  if (lps) {
+    const std::size_t nl = lps->array_size();
+    f.light_points.reserve(nl);
+    for (std::size_t i = 0; i < nl; ++i) f.light_points.push_back(read_screen_light_point((*lps)[i], np));
   }
   return f;
 }
 
-ScreenFrame load_polygon_list(const std::string& file) { return parse_polygon_list(read_text_file(file), file); }
+ScreenFrame parse_polygon_list(const std::string& text, const std::string& file, const PolygonListCheck& check) {
+  return polygon_list_of_document(parse_json_text(text, file), file, check);
+}
+
+ScreenFrame load_polygon_list(const std::string& file, const PolygonListCheck& check) {
+  // The text is let go once parsed (the document holds all of it): the peak is text + document,
+  // then document + frame, never the three.
+  const nlohmann::json doc = parse_json_text(read_text_file(file), file);
+  return polygon_list_of_document(doc, file, check);
+}
 
 namespace {
 
@@ -98,9 +128,13 @@ namespace {
 struct Number {
   double x;
 };
+// "%.17g" through std::to_chars (the same text as the stream at precision 17 in the C locale,
+// without the stream's locale and printf machinery per number: ~4,000 instructions each).
 std::ostream& operator<<(std::ostream& s, Number n) {
   if (n.x == 0 && std::signbit(n.x)) return s << "-0.0";
-  return s << n.x;
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, n.x, std::chars_format::general, 17).ptr;
+  return s.write(text, end - text);
 }
 
 }  // namespace

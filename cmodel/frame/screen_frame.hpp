@@ -4,9 +4,13 @@
 // documented in scenes/README.md.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "scene/scene.hpp"
 
@@ -83,8 +87,15 @@ struct ScreenFrame {
   bool lists_polyhedra = false;
 };
 
-ScreenFrame load_polygon_list(const std::string& file);
-ScreenFrame parse_polygon_list(const std::string& text, const std::string& file);
+// A capacity check on a polygon list's counts, called once the text is parsed and the counts are
+// known, before any polygon is read: `header` has the list's raster, frame, channel, fog and
+// background, no polygons. It throws (InputError) to refuse the list.
+using PolygonListCheck = std::function<void(const ScreenFrame& header, std::size_t polygons, std::size_t light_points)>;
+ScreenFrame load_polygon_list(const std::string& file, const PolygonListCheck& check = {});
+ScreenFrame parse_polygon_list(const std::string& text, const std::string& file, const PolygonListCheck& check = {});
+// The polygon list of a parsed document (parse_json_text), for a caller that has parsed it already.
+ScreenFrame polygon_list_of_document(const nlohmann::json& doc, const std::string& file,
+                                     const PolygonListCheck& check = {});
 std::string polygon_list_json(const ScreenFrame& f);  // "cig-polys" text
 // One list of a channel's rendering-pipeline lists (seed 000) in order: the polygons one after
 // another, each light's priority moved by the polygons before its part. Its polygon indices are

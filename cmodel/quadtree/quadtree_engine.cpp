@@ -50,15 +50,19 @@ class QuadProcessor {
   // The architecture for the frame's raster, and its polygon count against the ids' 16 bits.
   quad::Architecture check_frame(const ScreenFrame& frame) const {
     const quad::Architecture arch = check_raster(frame.raster);
-    if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds))
+    check_counts(frame.frame, frame.channel, frame.polygons.size());
+    return arch;
+  }
+  // A frame's polygons against the 16-bit ids (InputError).
+  static void check_counts(int frame, int channel, std::size_t polygons) {
+    if (polygons > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons",
                        "the quadtree engine takes at most 65536 polygons per channel (the 16-bit polygon id "
                        "of its window records, which the pixel processor compares with the light points' "
                        "priority); frame " +
-                           std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
-                           std::to_string(frame.polygons.size()) + " (the float engine takes up to " +
+                           std::to_string(frame) + " channel " + std::to_string(channel) + " has " +
+                           std::to_string(polygons) + " (the float engine takes up to " +
                            std::to_string(kMaxReferencePolygons) + ")");
-    return arch;
   }
 
   EngineRun render(const ScreenFrame& frame) {
@@ -234,6 +238,9 @@ class QuadEngine : public RasterEngine {
       : name_(name), format_(format), options_(o), processor_(o, name, format) {}
   const char* name() const override { return name_; }
   void check_engine_raster(int raster) const override { processor_.check_raster(raster); }
+  void check_counts(int frame, int channel, std::size_t polygons, std::size_t /*light_points*/) const override {
+    QuadProcessor<P>::check_counts(frame, channel, polygons);
+  }
 
  protected:
   EngineRun render_frame(const ScreenFrame& frame) override { return processor_.render(frame); }

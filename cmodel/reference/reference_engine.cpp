@@ -17,6 +17,14 @@ class FloatEngine : public RasterEngine {
     visibility_ = s.is("visibility", "priority") ? Visibility::kPriority : Visibility::kDepth;
   }
   const char* name() const override { return reference_engine_declaration().name; }
+  void check_counts(int frame, int channel, std::size_t polygons, std::size_t light_points) const override {
+    if (polygons > kMaxReferencePolygons || light_points > kMaxReferencePolygons)
+      throw InputError("", "polygons",
+                       std::string("the ") + name() + " engine takes at most " + std::to_string(kMaxReferencePolygons) +
+                           " polygons and as many light points per channel; frame " + std::to_string(frame) +
+                           " channel " + std::to_string(channel) + " has " + std::to_string(polygons) + " and " +
+                           std::to_string(light_points));
+  }
 
  protected:
   // The grid the snapped reference rounds to: eq. 1's, or the one subpixel=B names (InputError
@@ -34,12 +42,7 @@ class FloatEngine : public RasterEngine {
   void check_engine_raster(int raster) const override { snap_grid_bits(raster); }
   void check_split_frame(const ScreenFrame& frame) const override {
     snap_grid_bits(frame.raster);
-    if (frame.polygons.size() > kMaxReferencePolygons || frame.light_points.size() > kMaxReferencePolygons)
-      throw InputError("", "polygons",
-                       std::string("the ") + name() + " engine takes at most " + std::to_string(kMaxReferencePolygons) +
-                           " polygons and as many light points per channel; frame " + std::to_string(frame.frame) +
-                           " channel " + std::to_string(frame.channel) + " has " +
-                           std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()));
+    check_counts(frame.frame, frame.channel, frame.polygons.size(), frame.light_points.size());
   }
   EngineRun render_frame(const ScreenFrame& frame) override {
     check_split_frame(frame);

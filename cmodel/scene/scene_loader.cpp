@@ -401,7 +401,10 @@ void read_observer(const JsonNode& root, Scene& s) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file, const SceneLimits& limits) {
-  nlohmann::json doc = parse_json_text(text, file);
+  return scene_of_document(parse_json_text(text, file), file, limits);
+}
+
+Scene scene_of_document(const nlohmann::json& doc, const std::string& file, const SceneLimits& limits) {
   JsonNode root(doc, file, "");
   if (root.at("format").string() != "cig-scene")
     root.at("format").fail("must be \"cig-scene\" (a polygon list uses \"cig-polys\")");
@@ -442,7 +445,9 @@ Scene parse_scene(const std::string& text, const std::string& file, const SceneL
 }
 
 Scene load_scene(const std::string& file, const SceneLimits& limits) {
-  return parse_scene(read_text_file(file), file, limits);
+  // The text is let go once parsed: the scene is read from the document alone.
+  const nlohmann::json doc = parse_json_text(read_text_file(file), file);
+  return scene_of_document(doc, file, limits);
 }
 
 }  // namespace cig

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "scene/priority_compiler.hpp"
 #include "scene/scene.hpp"
 
@@ -19,6 +21,8 @@ struct SceneLimits {
 
 Scene load_scene(const std::string& file, const SceneLimits& limits = {});
 Scene parse_scene(const std::string& text, const std::string& file, const SceneLimits& limits = {});
+// The scene of a parsed document (parse_json_text), for a caller that has parsed it already.
+Scene scene_of_document(const nlohmann::json& doc, const std::string& file, const SceneLimits& limits = {});
 
 // Whole-pipeline rule on raster sizes: a power of two in [kMinRaster, kMaxRaster].
 bool valid_raster_size(long long n);

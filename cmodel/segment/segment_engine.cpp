@@ -158,16 +158,19 @@ class SegmentProcessor {
       throw InputError("", "raster",
                        "the segment engine renders rasters of 16 to 1024 lines, not " + std::to_string(n));
     check_lattice(log2, side_log2, "segment");
-    if (frame.polygons.size() > std::size_t(hls::kMaxPolygonIds) ||
-        frame.light_points.size() > std::size_t(hls::kMaxPolygonIds))
+    check_counts(frame.frame, frame.channel, frame.polygons.size(), frame.light_points.size());
+    return log2;
+  }
+  // A frame's polygons and light points against the 16-bit ids (InputError).
+  static void check_counts(int frame, int channel, std::size_t polygons, std::size_t light_points) {
+    if (polygons > std::size_t(hls::kMaxPolygonIds) || light_points > std::size_t(hls::kMaxPolygonIds))
       throw InputError("", "polygons",
                        "the segment engine takes at most 65536 polygons and 65536 light points per channel (the "
                        "16-bit polygon id of its frame-memory and segment records, and the video channel's colour "
                        "and plane tables of 65536 entries); frame " +
-                           std::to_string(frame.frame) + " channel " + std::to_string(frame.channel) + " has " +
-                           std::to_string(frame.polygons.size()) + " and " + std::to_string(frame.light_points.size()) +
+                           std::to_string(frame) + " channel " + std::to_string(channel) + " has " +
+                           std::to_string(polygons) + " and " + std::to_string(light_points) +
                            " (the float engine takes up to " + std::to_string(kMaxReferencePolygons) + ")");
-    return log2;
   }
 
   EngineRun render(const ScreenFrame& frame, const char* engine_name, const char* format_name) {
@@ -584,6 +587,9 @@ class SegmentEngine : public RasterEngine {
     ScreenFrame f;
     f.raster = raster;
     SegmentProcessor<P>::check_frame(f, side_log2_);
+  }
+  void check_counts(int frame, int channel, std::size_t polygons, std::size_t light_points) const override {
+    SegmentProcessor<P>::check_counts(frame, channel, polygons, light_points);
   }
 
  protected:
