@@ -261,15 +261,17 @@ void resolve_samples(int px, int side_log2, const VideoTables<P>& t, const LineB
   typename P::Sample background[3];
   for (int c = 0; c < 3; ++c) background[c] = P::level_sample(t.background[c]);
   int ids[kMaxSamplesPerPixel];
+  bool one_owner = true;  // the common case: every sample has the first one's polygon
   for (int r = 0; r < kSide; ++r)
     for (int q = 0; q < kSide; ++q) {
       const int i = kSide * px + q;
       const bool owned = w.owned[r][i];
       for (int c = 0; c < 3; ++c) sum[c] = P::box_add(sum[c], owned ? w.rgb[r][i][c] : background[c]);
       ids[kSide * r + q] = w.polygon[r][i];
+      one_owner = one_owner && w.polygon[r][i] == w.polygon[0][kSide * px];
     }
   for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve_sum(sum[c], side_log2);
-  out.id[px] = majority_polygon(ids, kSide * kSide);
+  out.id[px] = one_owner ? ids[0] : majority_polygon(ids, kSide * kSide);
 }
 
 }  // namespace detail
@@ -297,20 +299,18 @@ void resolve_pixel(int px, const LatticeGeometry& g, const VideoTables<P>& t, co
   }
 }
 
-// The line buffer's S sample rows of `cols` samples, cleared (nothing owned, no polygon).
+// The line buffer's S sample rows of `cols` samples, cleared (nothing owned, no polygon): a mask
+// word's 64 samples at a time.
 template <class P>
 void clear_line_buffer(const LatticeGeometry& g, int cols, LineBuffer<P>& w) {
   for (int r = 0; r < kMaxRowsPerLine; ++r) {
     if (r >= g.side()) break;
-    for (int i = 0; i < kMaxLatticeSize; ++i) {
-      if (i >= cols) break;
-      w.owned[r][i] = false;
-      w.polygon[r][i] = -1;
-    }
     for (int k = 0; k < kLineMaskWords; ++k) {
       if (k << kMaskWordLog2 >= cols) break;
       w.owned_mask[r][k] = MaskWord(0);
       w.settled_mask[r][k] = MaskWord(0);
+      for (int b = 0; b < kMaskWordBits; ++b) w.owned[r][(k << kMaskWordLog2) + b] = false;
+      for (int b = 0; b < kMaskWordBits; ++b) w.polygon[r][(k << kMaskWordLog2) + b] = -1;
     }
   }
 }
