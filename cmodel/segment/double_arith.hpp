@@ -72,6 +72,9 @@ struct DoubleSegmentArith {
     return w0 > 0 && w1 > 0 && t.end > t.start && Plane::fog_factor(t, w0, e) == Plane::fog_factor(t, w1, e);
   }
   static bool is_flat(double d) { return d == 0; }
+  // The twin's fog factor is continuous: two samples share it only where it is clamped (0 or 1),
+  // which the row's check finds; no word-level check (a span beyond a word).
+  static constexpr int kWordFogSpan = 64;
   // No fog: c I / 256 (1 - 0) + fog 0 = c I / 256 exactly, colour x I alone (shade).
   static bool no_fog(double f) { return f == 0; }
 

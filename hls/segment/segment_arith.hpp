@@ -60,6 +60,8 @@ struct FixedSegmentArith {
     return true;
   }
   static bool is_flat(const typename Plane::Gradient& d) { return d.value() == 0; }
+  // The fog factor steps (256 levels over the fog range): a word of a row in fog often holds one.
+  static constexpr int kWordFogSpan = 8;
   // No fog: fog_mix(s, fog, 0) = s exactly (s * 256 / 256 + 0), colour x I alone.
   static bool no_fog(const typename Plane::FogFactorType& f) { return f.raw().value() == 0; }
 

@@ -176,12 +176,17 @@ void draw_row(const SegmentSampler<P>& sm, int r, int row, int i0, int i1, LineB
         todo = todo & MaskWord(todo.value() - 1);  // clears the lowest set bit
       }
     }
-    if (fresh.value() != 0 && !rs.known) rs = sm.row_shade(row, i0, i1);
+    if (fresh.value() == 0) continue;
+    if (!rs.known) rs = sm.row_shade(row, i0, i1);
+    // A row whose fog varies: the word's samples may still share theirs (the same rule, on the
+    // word's first and last sample to colour, when they lie P::kWordFogSpan or more apart).
+    const int lo = lowest_one(fresh), hi = leading_one(fresh);
+    const RowShade<P> ws = rs.same_fog || hi - lo < P::kWordFogSpan ? rs : sm.row_shade(row, base + lo, base + hi);
     for (int b = 0; b < kMaskWordBits; ++b) {
       if (fresh.value() == 0) break;
       const int bit = lowest_one(fresh);
       fresh = fresh & MaskWord(fresh.value() - 1);
-      sm.sample(rs, r, row, base + bit, w);
+      sm.sample(ws, r, row, base + bit, w);
     }
   }
 }
