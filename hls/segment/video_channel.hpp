@@ -168,10 +168,13 @@ void draw_row(const SegmentSampler<P>& sm, int r, int row, int i0, int i1, LineB
     MaskWord todo = span & door & ~closed;
     MaskWord fresh = todo & ~w.owned_mask[r][word];
     w.owned_mask[r][word] = w.owned_mask[r][word] | todo;
+    // A polygon's samples here take it as their first polygon; those no light owned (the common
+    // case: every one) in the colouring pass below.
+    const bool mark_while_colouring = !sm.s.is_light && todo.value() == fresh.value();
     if (!sm.s.is_light) {
       w.settled_mask[r][word] = w.settled_mask[r][word] | todo;
       for (int b = 0; b < kMaskWordBits; ++b) {
-        if (todo.value() == 0) break;
+        if (mark_while_colouring || todo.value() == 0) break;
         w.polygon[r][base + lowest_one(todo)] = sm.src;
         todo = todo & MaskWord(todo.value() - 1);  // clears the lowest set bit
       }
@@ -186,6 +189,7 @@ void draw_row(const SegmentSampler<P>& sm, int r, int row, int i0, int i1, LineB
       if (fresh.value() == 0) break;
       const int bit = lowest_one(fresh);
       fresh = fresh & MaskWord(fresh.value() - 1);
+      if (mark_while_colouring) w.polygon[r][base + bit] = sm.src;
       sm.sample(ws, r, row, base + bit, w);
     }
   }
