@@ -261,26 +261,26 @@ inline int majority_polygon(const int (&ids)[kMaxSamplesPerPixel], int count) {
 
 namespace detail {
 
-// Box filter and majority id of pixel px from the line buffer, for S = kSide samples a side (a
+// Box filter and majority id of pixel px from the line buffer, for S samples a side (a
 // loop nest of static bounds for each lattice): the samples summed in row order as they are read
 // (an accumulator per colour component).
-template <class P, int kSide>
+template <class P, int S>
 void resolve_samples(int px, int side_log2, const VideoTables<P>& t, const LineBuffer<P>& w, PixelLine& out) {
   typename P::BoxAccum sum[3] = {};
   typename P::Sample background[3];
   for (int c = 0; c < 3; ++c) background[c] = P::level_sample(t.background[c]);
   int ids[kMaxSamplesPerPixel];
   bool one_owner = true;  // the common case: every sample has the first one's polygon
-  for (int r = 0; r < kSide; ++r)
-    for (int q = 0; q < kSide; ++q) {
-      const int i = kSide * px + q;
+  for (int r = 0; r < S; ++r)
+    for (int q = 0; q < S; ++q) {
+      const int i = S * px + q;
       const bool owned = w.owned[r][i];
       for (int c = 0; c < 3; ++c) sum[c] = P::box_add(sum[c], owned ? w.rgb[r][i][c] : background[c]);
-      ids[kSide * r + q] = w.polygon[r][i];
-      one_owner = one_owner && w.polygon[r][i] == w.polygon[0][kSide * px];
+      ids[S * r + q] = w.polygon[r][i];
+      one_owner = one_owner && w.polygon[r][i] == w.polygon[0][S * px];
     }
   for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve_sum(sum[c], side_log2);
-  out.id[px] = one_owner ? ids[0] : majority_polygon(ids, kSide * kSide);
+  out.id[px] = one_owner ? ids[0] : majority_polygon(ids, S * S);
 }
 
 }  // namespace detail
