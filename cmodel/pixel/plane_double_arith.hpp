@@ -28,9 +28,10 @@ struct PlaneDoubleArith {
   };
 
   // The box filter's output: the mean of the 4^side_log2 samples' 8-bit values, rounded (half away
-  // from zero) and clamped to 255 (the twins' resolve; the fixed kernels' is hls/pixel/).
+  // from zero) and clamped to 255 (the twins' resolve; the fixed kernels' is hls/pixel/). The
+  // division by a power of two is exact (as ldexp), without a library call.
   static hls::UInt<8> box_mean(double sum, int side_log2) {
-    return hls::UInt<8>(int(std::lround(std::clamp(std::ldexp(sum, -2 * side_log2), 0.0, 255.0))));
+    return hls::UInt<8>(int(std::lround(std::clamp(sum / double(1 << (2 * side_log2)), 0.0, 255.0))));
   }
 
   static Value intensity_value(double i) { return i; }

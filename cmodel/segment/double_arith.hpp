@@ -65,6 +65,19 @@ struct DoubleSegmentArith {
     out.w_exponent = hls::Int<10>(0);
   }
 
+  // The video channel's row sharing (RowShade): for W > 0 and end > start the fog factor
+  // clamp((1/W - start) / (end - start), 0, 1) is monotone in W (each rounded step is), and W along
+  // a row is monotone in i, so equal factors at both ends hold between; I is flat when D_I = 0.
+  static bool same_fog(const Plane::FogTable& t, double w0, double w1, const hls::Int<10>& e) {
+    return w0 > 0 && w1 > 0 && t.end > t.start && Plane::fog_factor(t, w0, e) == Plane::fog_factor(t, w1, e);
+  }
+  static bool is_flat(double d) { return d == 0; }
+  // The twin's fog factor is continuous: two samples share it only where it is clamped (0 or 1),
+  // which the row's check finds; no word-level check (a span beyond a word).
+  static constexpr int kWordFogSpan = 64;
+  // No fog: c I / 256 (1 - 0) + fog 0 = c I / 256 exactly, colour x I alone (shade).
+  static bool no_fog(double f) { return f == 0; }
+
   static double row_y(const LatticeGeometry& g, int k) { return 0.5 * g.sample_half(k); }
   static double spacing(const LatticeGeometry& g) { return std::ldexp(1.0, g.log2_half_spacing - 1); }
   static int first_row_at_or_after(const LatticeGeometry& g, double y) {

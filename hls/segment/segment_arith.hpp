@@ -42,6 +42,29 @@ struct FixedSegmentArith {
   // format (hls/pixel/attribute_planes.hpp), fitted as the quadtree setup fits them.
   using Plane = PlaneFixedArith<PlaneFormatDefault>;
   using Planes = AttributePlanes<Plane>;
+  // The video channel's row sharing (hls/segment/video_channel.hpp, RowShade). The e8m7 code of W
+  // is monotone in W, so the samples between w0 and w1 have codes between theirs: the same fog
+  // factor when the table holds one value over that range (a range of up to kFogScan codes is
+  // read; a longer one counts as not shared). I is flat along a row when D_I = 0.
+  static constexpr int kFogScan = 32;
+  static bool same_fog(const typename Plane::FogTable& t, const typename Plane::Param& w0,
+                       const typename Plane::Param& w1, const Int<10>& w_exponent) {
+    const int c0 = int(Plane::inverse_depth_code(w0, w_exponent).bits.value());
+    const int c1 = int(Plane::inverse_depth_code(w1, w_exponent).bits.value());
+    const int lo = c0 < c1 ? c0 : c1, hi = c0 < c1 ? c1 : c0;
+    if (hi - lo > kFogScan) return false;
+    for (int k = 1; k <= kFogScan; ++k) {
+      if (lo + k > hi) break;
+      if (t.f[lo + k].raw().value() != t.f[lo].raw().value()) return false;
+    }
+    return true;
+  }
+  static bool is_flat(const typename Plane::Gradient& d) { return d.value() == 0; }
+  // The fog factor steps (256 levels over the fog range): a word of a row in fog often holds one.
+  static constexpr int kWordFogSpan = 8;
+  // No fog: fog_mix(s, fog, 0) = s exactly (s * 256 / 256 + 0), colour x I alone.
+  static bool no_fog(const typename Plane::FogFactorType& f) { return f.raw().value() == 0; }
+
   // Over the polygon's vertices without consecutive repeats (fan_triangle false: a convex polygon),
   // or on its fan triangle (0, k, k + 1) of largest area (a polygon that snapping made non-convex:
   // every span piece gets the same planes). A polygon of no area gets zero planes (it draws
@@ -211,7 +234,10 @@ struct FixedSegmentArith {
   }
   static Depth lerp_depth(const Depth& zl, const Depth& zr, const Ratio& t) { return zfloat_lerp_ratio(zl, zr, t); }
   static FogFactor fog_factor(const FogTable& t, const Depth& z) { return fog_lookup(t, z); }
-  static Sample shade(const Level& c, const Intensity& i) { return ::cig::hls::shade(c, i); }
+  template <class I>  // I at a segment end (Intensity) or from the plane (Plane::Intensity)
+  static Sample shade(const Level& c, const I& i) {
+    return ::cig::hls::shade(c, i);
+  }
   static Sample mix(const Sample& s, const Level& fog, const FogFactor& f) { return fog_mix(s, fog, f); }
   static Sample level_sample(const Level& c) { return ::cig::hls::level_sample(c); }
   static UInt<8> resolve(const Sample (&s)[kMaxSamplesPerPixel], int side_log2) { return resolve_box(s, side_log2); }

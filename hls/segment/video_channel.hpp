@@ -55,24 +55,21 @@ struct PixelLine {
 
 namespace detail {
 
-// Perspective-correct mode: sample (i, row) of polygon src takes I and W = 1/Z from the polygon's
-// planes, exactly (F + D i + E j: in hardware the video channel steps the values along the row by
-// D, which gives the same bits), colour x I and fog by 1/Z, as the quadtree's pixel processor.
+// What the samples of one sample row of a segment share (plane mode), found at the row's first
+// sample to colour. W = 1/Z is linear along the row and its code (or, in the twin, its fog factor)
+// monotone in W, so the fog factor of every sample between the row's ends is known from theirs
+// (P::same_fog); without fog (f = 0) a sample's colour is colour x I alone; with I flat along the
+// row too (D_I = 0) every sample of the row takes the same colour, found once.
 template <class P>
-void plane_sample(const VideoTables<P>& t, int src, int i, int row, typename P::Sample (&rgb)[3]) {
-  using Plane = typename P::Plane;
-  const typename P::Planes& pl = t.polygon_planes[src];
-  const typename Plane::Param vi =
-      Plane::at_sample(pl.f[kParamIntensity], pl.d[kParamIntensity], pl.e[kParamIntensity], i, row);
-  const typename Plane::Param vw =
-      Plane::at_sample(pl.f[kParamInverseDepth], pl.d[kParamInverseDepth], pl.e[kParamInverseDepth], i, row);
-  const typename Plane::Intensity in = Plane::intensity(vi);
-  const typename Plane::FogFactorType f = Plane::fog_factor(t.fog_inverse, vw, pl.w_exponent);
-  for (int c = 0; c < 3; ++c) rgb[c] = Plane::sample_colour(t.polygon_colour[src][c], in, f, t.fog_colour[c]);
-}
+struct RowShade {
+  bool known = false;  // found for this row
+  bool same_fog = false, no_fog = false, same_colour = false;
+  typename P::Plane::FogFactorType f;
+  typename P::Sample rgb[3];
+};
 
-// Sample i of sample row r (global row `row`) for segment s: its first polygon, then its colour
-// if no earlier segment owns it (visibility by priority).
+// Sample i of sample row r (global row `row`) for segment s, not yet coloured by an earlier
+// segment (visibility by priority): its colour.
 template <class P>
 struct SegmentSampler {
   const Segment<P>& s;
@@ -83,12 +80,55 @@ struct SegmentSampler {
   typename P::X xlt;           // where il and zl hold (seed interpolation)
   typename P::Reciprocal inv;  // 1 / span (seed interpolation)
 
-  void sample(int r, int row, int i, LineBuffer<P>& w) const {
-    if (!s.is_light && w.polygon[r][i] < 0) w.polygon[r][i] = src;
-    if (w.owned[r][i]) return;
+  // Perspective-correct mode: sample (i, row) takes I and W = 1/Z from the polygon's planes,
+  // exactly (F + D i + E j: in hardware the video channel steps the values along the row by D,
+  // which gives the same bits), colour x I and fog by 1/Z, as the quadtree's pixel processor.
+  void plane_sample(const RowShade<P>& rs, int i, int row, typename P::Sample (&rgb)[3]) const {
+    using Plane = typename P::Plane;
+    const typename P::Planes& pl = t.polygon_planes[src];
+    const typename Plane::Param vi =
+        Plane::at_sample(pl.f[kParamIntensity], pl.d[kParamIntensity], pl.e[kParamIntensity], i, row);
+    const typename Plane::Intensity in = Plane::intensity(vi);
+    if (rs.no_fog) {
+      for (int c = 0; c < 3; ++c) rgb[c] = P::shade(t.polygon_colour[src][c], in);
+      return;
+    }
+    typename Plane::FogFactorType f = rs.f;
+    if (!rs.same_fog) {
+      const typename Plane::Param vw =
+          Plane::at_sample(pl.f[kParamInverseDepth], pl.d[kParamInverseDepth], pl.e[kParamInverseDepth], i, row);
+      f = Plane::fog_factor(t.fog_inverse, vw, pl.w_exponent);
+    }
+    for (int c = 0; c < 3; ++c) rgb[c] = Plane::sample_colour(t.polygon_colour[src][c], in, f, t.fog_colour[c]);
+  }
+
+  // The row's shared fog factor and colour (plane mode), from its end samples i0 and i1.
+  RowShade<P> row_shade(int row, int i0, int i1) const {
+    using Plane = typename P::Plane;
+    RowShade<P> rs;
+    rs.known = true;
+    if (!planes) return rs;
+    const typename P::Planes& pl = t.polygon_planes[src];
+    const int w = kParamInverseDepth;
+    const typename Plane::Param w0 = Plane::at_sample(pl.f[w], pl.d[w], pl.e[w], i0, row);
+    const typename Plane::Param w1 = Plane::at_sample(pl.f[w], pl.d[w], pl.e[w], i1, row);
+    rs.same_fog = P::same_fog(t.fog_inverse, w0, w1, pl.w_exponent);
+    if (!rs.same_fog) return rs;
+    rs.f = Plane::fog_factor(t.fog_inverse, w0, pl.w_exponent);
+    rs.no_fog = P::no_fog(rs.f);
+    rs.same_colour = P::is_flat(pl.d[kParamIntensity]);
+    if (rs.same_colour) plane_sample(rs, i0, row, rs.rgb);
+    return rs;
+  }
+
+  void sample(const RowShade<P>& rs, int r, int row, int i, LineBuffer<P>& w) const {
     w.owned[r][i] = true;
+    if (rs.same_colour) {
+      for (int c = 0; c < 3; ++c) w.rgb[r][i][c] = rs.rgb[c];
+      return;
+    }
     if (planes) {
-      plane_sample(t, src, i, row, w.rgb[r][i]);
+      plane_sample(rs, i, row, w.rgb[r][i]);
       return;
     }
     const typename P::Ratio along = P::ratio(typename P::X(P::column_x(g, i) - xlt), inv);
@@ -110,11 +150,14 @@ inline MaskWord mask_bits(int lo, int hi) {
 
 // Samples i0..i1 of sample row r that segment s may still write: word by word, the span's bits
 // that the screen door leaves open and that no earlier segment settled (a polygon) or owned (a
-// light); within a word only the set bits, lowest first.
+// light); within a word only the set bits, lowest first. A polygon's samples there have no first
+// polygon yet (a sample gets one as it settles): each takes this one; the samples that no segment
+// owned yet (the owned mask) take its colour.
 template <class P>
 void draw_row(const SegmentSampler<P>& sm, int r, int row, int i0, int i1, LineBuffer<P>& w) {
   // Screen door: samples with (i + row) even (a word starts at an even i).
   const MaskWord door(sm.s.opaque ? ~std::uint64_t{0} : (row & 1) ? 0xAAAAAAAAAAAAAAAAull : 0x5555555555555555ull);
+  RowShade<P> rs;
   const int first = i0 >> kMaskWordLog2, last = i1 >> kMaskWordLog2;
   for (int k = 0; k < kLineMaskWords; ++k) {
     const int word = first + k;
@@ -123,13 +166,31 @@ void draw_row(const SegmentSampler<P>& sm, int r, int row, int i0, int i1, LineB
     const MaskWord span = mask_bits(word == first ? i0 - base : 0, word == last ? i1 - base : kMaskWordBits - 1);
     const MaskWord closed = sm.s.is_light ? w.owned_mask[r][word] : w.settled_mask[r][word];
     MaskWord todo = span & door & ~closed;
+    MaskWord fresh = todo & ~w.owned_mask[r][word];
     w.owned_mask[r][word] = w.owned_mask[r][word] | todo;
-    if (!sm.s.is_light) w.settled_mask[r][word] = w.settled_mask[r][word] | todo;
+    // A polygon's samples here take it as their first polygon; those no light owned (the common
+    // case: every one) in the colouring pass below.
+    const bool mark_while_colouring = !sm.s.is_light && todo.value() == fresh.value();
+    if (!sm.s.is_light) {
+      w.settled_mask[r][word] = w.settled_mask[r][word] | todo;
+      for (int b = 0; b < kMaskWordBits; ++b) {
+        if (mark_while_colouring || todo.value() == 0) break;
+        w.polygon[r][base + lowest_one(todo)] = sm.src;
+        todo = todo & MaskWord(todo.value() - 1);  // clears the lowest set bit
+      }
+    }
+    if (fresh.value() == 0) continue;
+    if (!rs.known) rs = sm.row_shade(row, i0, i1);
+    // A row whose fog varies: the word's samples may still share theirs (the same rule, on the
+    // word's first and last sample to colour, when they lie P::kWordFogSpan or more apart).
+    const int lo = lowest_one(fresh), hi = leading_one(fresh);
+    const RowShade<P> ws = rs.same_fog || hi - lo < P::kWordFogSpan ? rs : sm.row_shade(row, base + lo, base + hi);
     for (int b = 0; b < kMaskWordBits; ++b) {
-      if (todo.value() == 0) break;
-      const int bit = lowest_one(todo);
-      todo = todo & MaskWord(todo.value() - 1);  // clears the lowest set bit
-      sm.sample(r, row, base + bit, w);
+      if (fresh.value() == 0) break;
+      const int bit = lowest_one(fresh);
+      fresh = fresh & MaskWord(fresh.value() - 1);
+      if (mark_while_colouring) w.polygon[r][base + bit] = sm.src;
+      sm.sample(ws, r, row, base + bit, w);
     }
   }
 }
@@ -160,68 +221,105 @@ void draw_segment(const Segment<P>& s, int line, const LatticeGeometry& g, int c
 }  // namespace detail
 
 // The majority owner of a pixel's samples: most samples wins; ties go to the earlier polygon; the
-// background (-1) loses ties (as the float reference).
+// background (-1) loses ties (as the float reference). The rule orders the owners by (count, id), so
+// the owners can be counted in any order: each distinct owner once, with its count (a pixel's
+// samples have few owners: a row's run of one owner costs one comparison a sample).
 inline int majority_polygon(const int (&ids)[kMaxSamplesPerPixel], int count) {
-  bool uniform = true;  // the common case: one owner for the whole pixel
-  for (int a = 1; a < kMaxSamplesPerPixel; ++a) {
-    if (a >= count) break;
-    uniform = uniform && ids[a] == ids[0];
-  }
-  if (uniform) return ids[0];
-  int best = -1, best_count = 0;
+  int owner[kMaxSamplesPerPixel], votes[kMaxSamplesPerPixel];
+  owner[0] = ids[0];
+  votes[0] = 0;
+  int owners = 1, last = 0;  // last: the owner of the sample before
   for (int a = 0; a < kMaxSamplesPerPixel; ++a) {
     if (a >= count) break;
-    int n = 0;
-    for (int b = 0; b < kMaxSamplesPerPixel; ++b) {
-      if (b >= count) break;
-      n += ids[b] == ids[a] ? 1 : 0;
+    if (ids[a] != owner[last]) {
+      last = owners;
+      for (int k = 0; k < kMaxSamplesPerPixel; ++k) {
+        if (k >= owners) break;
+        if (owner[k] == ids[a]) {
+          last = k;
+          break;
+        }
+      }
+      if (last == owners) {
+        owner[owners] = ids[a];
+        votes[owners++] = 0;
+      }
     }
-    const bool better = n > best_count || (n == best_count && ids[a] != best &&
-                                           (best == -1 ? ids[a] >= 0 : (ids[a] >= 0 && ids[a] < best)));
-    if (better) {
-      best = ids[a];
+    ++votes[last];
+  }
+  int best = owner[0], best_count = votes[0];
+  for (int k = 1; k < kMaxSamplesPerPixel; ++k) {
+    if (k >= owners) break;
+    const int id = owner[k], n = votes[k];
+    if (n > best_count || (n == best_count && (best == -1 ? id >= 0 : (id >= 0 && id < best)))) {
+      best = id;
       best_count = n;
     }
   }
   return best;
 }
 
-// Box filter and majority id of pixel px from the line buffer (S x S samples, S = g.side()): the
-// samples summed in row order as they are read (an accumulator per colour component).
-template <class P>
-void resolve_pixel(int px, const LatticeGeometry& g, const VideoTables<P>& t, const LineBuffer<P>& w, PixelLine& out) {
-  const int side = g.side();
+namespace detail {
+
+// Box filter and majority id of pixel px from the line buffer, for S samples a side (a
+// loop nest of static bounds for each lattice): the samples summed in row order as they are read
+// (an accumulator per colour component).
+template <class P, int S>
+void resolve_samples(int px, int side_log2, const VideoTables<P>& t, const LineBuffer<P>& w, PixelLine& out) {
   typename P::BoxAccum sum[3] = {};
   typename P::Sample background[3];
   for (int c = 0; c < 3; ++c) background[c] = P::level_sample(t.background[c]);
   int ids[kMaxSamplesPerPixel];
-  for (int r = 0; r < kMaxRowsPerLine; ++r) {
-    if (r >= side) break;
-    for (int q = 0; q < kMaxRowsPerLine; ++q) {
-      if (q >= side) break;
-      const int i = side * px + q;
-      for (int c = 0; c < 3; ++c) sum[c] = P::box_add(sum[c], w.owned[r][i] ? w.rgb[r][i][c] : background[c]);
-      ids[side * r + q] = w.polygon[r][i];
+  bool one_owner = true;  // the common case: every sample has the first one's polygon
+  for (int r = 0; r < S; ++r)
+    for (int q = 0; q < S; ++q) {
+      const int i = S * px + q;
+      const bool owned = w.owned[r][i];
+      for (int c = 0; c < 3; ++c) sum[c] = P::box_add(sum[c], owned ? w.rgb[r][i][c] : background[c]);
+      ids[S * r + q] = w.polygon[r][i];
+      one_owner = one_owner && w.polygon[r][i] == w.polygon[0][S * px];
     }
-  }
-  for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve_sum(sum[c], g.side_log2);
-  out.id[px] = majority_polygon(ids, side * side);
+  for (int c = 0; c < 3; ++c) out.rgb[px][c] = P::resolve_sum(sum[c], side_log2);
+  out.id[px] = one_owner ? ids[0] : majority_polygon(ids, S * S);
 }
 
-// The line buffer's S sample rows of `cols` samples, cleared (nothing owned, no polygon).
+}  // namespace detail
+
+// Box filter and majority id of pixel px from the line buffer (S x S samples, S = g.side()): one
+// case per lattice up to the build's largest (kMaxSideLog2, 3 unless an HLS build sets less).
+template <class P>
+void resolve_pixel(int px, const LatticeGeometry& g, const VideoTables<P>& t, const LineBuffer<P>& w, PixelLine& out) {
+  static_assert(kMaxSideLog2 <= 3, "resolve_pixel: a case for each lattice");
+  constexpr int k2 = kMaxSamplesPerSide < 2 ? kMaxSamplesPerSide : 2;
+  constexpr int k4 = kMaxSamplesPerSide < 4 ? kMaxSamplesPerSide : 4;
+  switch (g.side_log2) {
+    case 0:
+      detail::resolve_samples<P, 1>(px, 0, t, w, out);
+      break;
+    case 1:
+      detail::resolve_samples<P, k2>(px, 1, t, w, out);
+      break;
+    case 2:
+      detail::resolve_samples<P, k4>(px, 2, t, w, out);
+      break;
+    default:
+      detail::resolve_samples<P, kMaxSamplesPerSide>(px, 3, t, w, out);
+      break;
+  }
+}
+
+// The line buffer's S sample rows of `cols` samples, cleared (nothing owned, no polygon): a mask
+// word's 64 samples at a time.
 template <class P>
 void clear_line_buffer(const LatticeGeometry& g, int cols, LineBuffer<P>& w) {
   for (int r = 0; r < kMaxRowsPerLine; ++r) {
     if (r >= g.side()) break;
-    for (int i = 0; i < kMaxLatticeSize; ++i) {
-      if (i >= cols) break;
-      w.owned[r][i] = false;
-      w.polygon[r][i] = -1;
-    }
     for (int k = 0; k < kLineMaskWords; ++k) {
       if (k << kMaskWordLog2 >= cols) break;
       w.owned_mask[r][k] = MaskWord(0);
       w.settled_mask[r][k] = MaskWord(0);
+      for (int b = 0; b < kMaskWordBits; ++b) w.owned[r][(k << kMaskWordLog2) + b] = false;
+      for (int b = 0; b < kMaskWordBits; ++b) w.polygon[r][(k << kMaskWordLog2) + b] = -1;
     }
   }
 }
