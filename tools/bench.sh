@@ -2,7 +2,7 @@
 # The peer in the benchmark: every cig raster engine against Mesa's llvmpipe on the same polygon
 # lists (verif/bench/bench_llvmpipe.cpp), written up as verif/bench/RESULTS.md: per list, the CPU
 # time of each engine over llvmpipe's, and each image's PSNR against the float engine.
-#   tools/bench.sh [--curves | --check] [--out=DIR] [BUILD_DIR] [benchmark options...]
+#   tools/bench.sh [--curves | --check | --instructions=OLD_CIG] [--out=DIR] [BUILD_DIR] [benchmark options...]
 # BUILD_DIR: default build. Needs libosmesa6-dev (tools/deps.sh). The other options go to the
 # benchmark (e.g. --benchmark_filter=depth to try a few lists, --benchmark_min_time=0 for one frame
 # a case). --out=DIR: RESULTS.md and the plots written in DIR (a trial; DIR/RESULTS.md starts as a
@@ -32,6 +32,11 @@
 # engine and both ratios, when one has worsened by more than 15 %; 0 otherwise. Writes no RESULTS.md.
 # E.g. tools/bench.sh --check --benchmark_filter='^airfield_f0c1/' (one list, about 1 minute).
 #
+# --instructions=OLD_CIG: the time-free comparison (tools/bench_instructions.py): callgrind's
+# instructions per image inside each engine's render, OLD_CIG (e.g. a build of the merge base)
+# against BUILD_DIR's cig on the airfield and depth10 lists; writes the section "instructions".
+# About 10 minutes (20 runs under valgrind). Needs valgrind.
+#
 # Each mode rewrites only its part of RESULTS.md and keeps the others (tools/bench_results.py).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,6 +45,7 @@ for arg in "$@"; do
   case $arg in
     --curves) mode=curves ;;
     --check) mode=check ;;
+    --instructions=*) mode=instructions old_cig=${arg#--instructions=} ;;
     --out=*) out=${arg#--out=} ;;
     -*) args+=("$arg") ;;
     *) if [[ -z $build && ${#args[@]} -eq 0 ]]; then build=$arg; else args+=("$arg"); fi ;;
@@ -65,6 +71,14 @@ run_llvmpipe() {  # JSON, then the benchmark's options
 }
 
 case $mode in
+  instructions)
+    cmake --build "$build" -j "$(nproc)" --target cig
+    json="(none: instruction counts)"
+    python3 tools/bench_instructions.py "$old_cig" "$build/bin/cig" \
+      --old-label "before ($("$old_cig" --version | sed -n 's/.*commit \([0-9a-f]\{7\}\).*/\1/p'))" --new-label "after ($commit)" \
+      >"$tmp/instructions.md"
+    python3 tools/bench_results.py "$results" --section instructions="$tmp/instructions.md" >"$tmp/RESULTS.md"
+    ;;
   check)
     json="$build/bench_check.json"
     run_llvmpipe "$json" --benchmark_min_time=0.5 --benchmark_repetitions=3 ${args[@]+"${args[@]}"}
