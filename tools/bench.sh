@@ -40,7 +40,7 @@
 # Each mode rewrites only its part of RESULTS.md and keeps the others (tools/bench_results.py).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mode=table build="" out=verif/bench args=()
+mode=table build="" out=verif/bench json="" args=()
 for arg in "$@"; do
   case $arg in
     --curves) mode=curves ;;
@@ -73,7 +73,6 @@ run_llvmpipe() {  # JSON, then the benchmark's options
 case $mode in
   instructions)
     cmake --build "$build" -j "$(nproc)" --target cig
-    json="(none: instruction counts)"
     python3 tools/bench_instructions.py "$old_cig" "$build/bin/cig" \
       --old-label "before ($("$old_cig" --version | sed -n 's/.*commit \([0-9a-f]\{7\}\).*/\1/p'))" --new-label "after ($commit)" \
       >"$tmp/instructions.md"
@@ -110,4 +109,4 @@ case $mode in
     ;;
 esac
 mv "$tmp/RESULTS.md" "$results"
-echo "bench: wrote $results (raw: $json)"
+echo "bench: wrote $results${json:+ (raw: $json)}"
